@@ -1,0 +1,156 @@
+/* E-step: robust voting of the matched neighbourhoods, keeping the vote
+ * closest to the weighted mean (sharp output, exact source coordinates).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "level.h"
+
+#include <math.h>
+#include <string.h>
+
+static ptrdiff_t
+floor_div (ptrdiff_t a, ptrdiff_t b)
+{
+  ptrdiff_t q = a / b;
+  return (a % b != 0 && (a < 0) != (b < 0)) ? q - 1 : q;
+}
+
+/* Range [*lo, *hi] of centre indices within radius of virtual coordinate t;
+ * false if empty. */
+static bool
+centres_covering (const TsAxisGrid *g, ptrdiff_t t, size_t *lo, size_t *hi)
+{
+  ptrdiff_t r = (ptrdiff_t) g->radius, s = (ptrdiff_t) g->spacing, o = (ptrdiff_t) g->offset;
+  ptrdiff_t a = -floor_div (-(t - r - o), s);    /* ceil */
+  ptrdiff_t b = floor_div (t + r - o, s);
+
+  if (a < 0)
+    a = 0;
+  if (b > (ptrdiff_t) g->centres - 1)
+    b = (ptrdiff_t) g->centres - 1;
+  if (a > b)
+    return false;
+  *lo = (size_t) a;
+  *hi = (size_t) b;
+  return true;
+}
+
+typedef struct
+{
+  float   sum[TS_CHANNELS];
+  float   weight;
+  float   best_distance;
+  float   mean[TS_CHANNELS];
+  int32_t best_source;
+  bool    choosing;   /* second pass: pick the vote closest to the mean */
+} Votes;
+
+static void
+add_vote (Votes *v, const TsImage *ex, int32_t source, float weight)
+{
+  const float *value = ex->pixels + (size_t) source * TS_CHANNELS;
+
+  if (value[3] <= 0.0f || !(weight > 0.0f))
+    return;
+  if (!v->choosing)
+    {
+      for (int c = 0; c < TS_CHANNELS; c++)
+        v->sum[c] += weight * value[c];
+      v->weight += weight;
+      return;
+    }
+  float d = 0.0f;
+  for (int c = 0; c < TS_CHANNELS; c++)
+    {
+      float e = value[c] - v->mean[c];
+      d += e * e;
+    }
+  if (d < v->best_distance)
+    {
+      v->best_distance = d;
+      v->best_source = source;
+    }
+}
+
+static void
+collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+         const TsMatch *matches, const TsHistogram *histogram, size_t px, size_t py)
+{
+  const TsImage *ex = state->exemplar;
+  size_t ew = ex->width;
+
+  for (size_t vy = gy->virtual_start[py]; vy < gy->virtual_start[py + 1]; vy++)
+    {
+      ptrdiff_t ty = gy->virtual_coord[vy];
+      size_t jy_lo, jy_hi;
+      if (!centres_covering (gy, ty, &jy_lo, &jy_hi))
+        continue;
+      for (size_t vx = gx->virtual_start[px]; vx < gx->virtual_start[px + 1]; vx++)
+        {
+          ptrdiff_t tx = gx->virtual_coord[vx];
+          size_t jx_lo, jx_hi;
+          if (!centres_covering (gx, tx, &jx_lo, &jx_hi))
+            continue;
+          for (size_t jy = jy_lo; jy <= jy_hi; jy++)
+            {
+              ptrdiff_t dy = ty - ts_axis_grid_centre (gy, jy);
+              for (size_t jx = jx_lo; jx <= jx_hi; jx++)
+                {
+                  const TsMatch *m = &matches[jy * gx->centres + jx];
+                  if (m->centre < 0)
+                    continue;
+                  ptrdiff_t dx = tx - ts_axis_grid_centre (gx, jx);
+                  int32_t source = m->centre + (int32_t) (dy * (ptrdiff_t) ew + dx);
+                  float weight = m->weight;
+                  if (histogram)
+                    weight *= ts_histogram_factor (histogram, ex->pixels + (size_t) source * TS_CHANNELS);
+                  add_vote (v, ex, source, weight);
+                }
+            }
+        }
+    }
+}
+
+size_t
+ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+          const TsMatch *matches, const TsHistogram *histogram)
+{
+  size_t changed = 0;
+
+#pragma omp parallel for schedule(static) reduction(+:changed)
+  for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
+    for (size_t x = 0; x < state->width; x++)
+      {
+        size_t p = (size_t) y * state->width + x;
+        Votes v;
+        float keep = 0.0f;
+
+        memset (&v, 0, sizeof v);
+        collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);
+        if (state->preserve && state->preserve[p] > 0.0f)
+          {
+            /* Data term: the initial source votes with a share of the
+             * total weight that grows without bound as preserve -> 1. */
+            float w = state->preserve[p];
+            keep = (v.weight > 0.0f ? v.weight : 1.0f) * w / (1.0f - w + 1e-4f);
+            add_vote (&v, state->exemplar, state->preserve_source[p], keep);
+          }
+        if (!(v.weight > 0.0f))
+          continue;
+        for (int c = 0; c < TS_CHANNELS; c++)
+          v.mean[c] = v.sum[c] / v.weight;
+        v.choosing = true;
+        v.best_distance = INFINITY;
+        v.best_source = -1;
+        collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);
+        if (keep > 0.0f)
+          add_vote (&v, state->exemplar, state->preserve_source[p], keep);
+        if (v.best_source < 0)
+          continue;
+        if (v.best_source != state->source[p])
+          changed++;
+        state->source[p] = v.best_source;
+        memcpy (ts_image_pixel (&state->output, x, (size_t) y),
+                state->exemplar->pixels + (size_t) v.best_source * TS_CHANNELS,
+                TS_CHANNELS * sizeof (float));
+      }
+  return changed;
+}

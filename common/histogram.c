@@ -1,0 +1,69 @@
+/* SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "histogram.h"
+
+#include <string.h>
+
+/* Densities of the opaque pixels of `image`, normalised so a uniform
+ * histogram is 1 in every bin. */
+static void
+count (const TsHistogram *h, const TsImage *image, float out[3][TS_HISTOGRAM_BINS])
+{
+  size_t n = ts_image_pixel_count (image), used = 0;
+
+  memset (out, 0, sizeof (float) * 3 * TS_HISTOGRAM_BINS);
+  for (size_t i = 0; i < n; i++)
+    {
+      const float *p = image->pixels + i * TS_CHANNELS;
+      if (p[3] <= 0.0f)
+        continue;
+      for (int c = 0; c < 3; c++)
+        out[c][ts_histogram_bin (h, c, p[c])] += 1.0f;
+      used++;
+    }
+  if (used == 0)
+    return;
+  for (int c = 0; c < 3; c++)
+    for (size_t b = 0; b < TS_HISTOGRAM_BINS; b++)
+      out[c][b] *= (float) TS_HISTOGRAM_BINS / (float) used;
+}
+
+void
+ts_histogram_init (TsHistogram *h, const TsImage *exemplar)
+{
+  size_t n = ts_image_pixel_count (exemplar);
+  float lo[3] = { 1e30f, 1e30f, 1e30f }, hi[3] = { -1e30f, -1e30f, -1e30f };
+
+  for (size_t i = 0; i < n; i++)
+    {
+      const float *p = exemplar->pixels + i * TS_CHANNELS;
+      if (p[3] <= 0.0f)
+        continue;
+      for (int c = 0; c < 3; c++)
+        {
+          lo[c] = p[c] < lo[c] ? p[c] : lo[c];
+          hi[c] = p[c] > hi[c] ? p[c] : hi[c];
+        }
+    }
+  for (int c = 0; c < 3; c++)
+    {
+      float range = hi[c] > lo[c] ? hi[c] - lo[c] : 1.0f;
+      h->lo[c] = lo[c] <= hi[c] ? lo[c] : 0.0f;
+      h->scale[c] = (float) TS_HISTOGRAM_BINS / range;
+    }
+  count (h, exemplar, h->exemplar);
+  memset (h->excess, 0, sizeof h->excess);
+}
+
+void
+ts_histogram_update (TsHistogram *h, const TsImage *output)
+{
+  float density[3][TS_HISTOGRAM_BINS];
+
+  count (h, output, density);
+  for (int c = 0; c < 3; c++)
+    for (size_t b = 0; b < TS_HISTOGRAM_BINS; b++)
+      {
+        float d = density[c][b] - h->exemplar[c][b];
+        h->excess[c][b] = d > 0.0f ? d : 0.0f;
+      }
+}

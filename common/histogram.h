@@ -1,0 +1,43 @@
+/* Histogram matching (Kopf et al. 2007): lowers the weight of votes whose
+ * colour is over-represented in the output compared with the exemplar
+ * (internal).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#ifndef TS_HISTOGRAM_H
+#define TS_HISTOGRAM_H
+
+#include "image.h"
+
+#define TS_HISTOGRAM_BINS 32
+
+typedef struct
+{
+  float lo[3], scale[3];                      /* bin = (v - lo) * scale       */
+  float exemplar[3][TS_HISTOGRAM_BINS];       /* densities (mean 1 per bin)   */
+  float excess[3][TS_HISTOGRAM_BINS];         /* max(0, output - exemplar)    */
+} TsHistogram;
+
+/* Bins from the exemplar's opaque pixels. */
+void  ts_histogram_init (TsHistogram *histogram, const TsImage *exemplar);
+/* Recomputes the output side from the opaque pixels of `output`. */
+void  ts_histogram_update (TsHistogram *histogram, const TsImage *output);
+
+static inline size_t
+ts_histogram_bin (const TsHistogram *h, int channel, float v)
+{
+  float b = (v - h->lo[channel]) * h->scale[channel];
+  if (!(b > 0.0f))
+    return 0;
+  return b >= TS_HISTOGRAM_BINS - 1 ? TS_HISTOGRAM_BINS - 1 : (size_t) b;
+}
+
+/* Weight multiplier in (0, 1] of a vote with colour `lab`. */
+static inline float
+ts_histogram_factor (const TsHistogram *h, const float *lab)
+{
+  float excess = 0.0f;
+  for (int c = 0; c < 3; c++)
+    excess += h->excess[c][ts_histogram_bin (h, c, lab[c])];
+  return 1.0f / (1.0f + excess);
+}
+
+#endif

@@ -1,0 +1,68 @@
+/* State of one pyramid level during texture optimization, and its
+ * M-step / E-step (internal).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#ifndef TS_LEVEL_H
+#define TS_LEVEL_H
+
+#include "histogram.h"
+#include "mrpm.h"
+#include "schedule.h"
+
+typedef struct
+{
+  const TsImage        *exemplar;   /* working exemplar of this level         */
+  const TsCandidateSet *candidates; /* MRPM sets of this level                */
+  const int32_t        *opaque;     /* indices of exemplar pixels with alpha>0 */
+  size_t                opaque_count;
+  size_t                width, height; /* output size at this level          */
+  bool                  wrap_x, wrap_y;
+  TsImage               output;     /* X: current output (working format)     */
+  int32_t              *source;     /* S: exemplar index of each output pixel */
+  const float          *preserve;   /* data-term weight per output pixel, or NULL */
+  const int32_t        *preserve_source; /* exemplar index to keep, or NULL  */
+  const float          *penalty;    /* occurrence penalty per exemplar centre, or NULL */
+} TsLevelState;
+
+/* Neighbourhood centres of one iteration along one axis, plus for every
+ * output coordinate the virtual coordinates (outside [0, n) too) that the
+ * border rule maps onto it, so the E-step can gather votes. */
+typedef struct
+{
+  size_t     n;           /* output size along the axis           */
+  size_t     radius;
+  size_t     spacing;
+  size_t     offset;      /* first centre                          */
+  size_t     centres;     /* number of centres                     */
+  size_t    *virtual_start; /* n + 1 entries into virtual_coord    */
+  ptrdiff_t *virtual_coord;
+} TsAxisGrid;
+
+typedef struct
+{
+  int32_t centre;   /* matched exemplar centre (index), -1 if none   */
+  float   distance; /* sum of squared differences                    */
+  float   weight;   /* robust E-step weight, |x - z|^(r - 2), r = 0.8  */
+} TsMatch;
+
+TsStatus ts_axis_grid_init (TsAxisGrid *grid, size_t n, size_t radius, size_t spacing,
+                            size_t offset, bool wrap);
+void     ts_axis_grid_free (TsAxisGrid *grid);
+static inline ptrdiff_t
+ts_axis_grid_centre (const TsAxisGrid *grid, size_t j)
+{
+  return (ptrdiff_t) (grid->offset + j * grid->spacing);
+}
+
+/* M-step: for every centre of gx x gy, the best exemplar neighbourhood of
+ * the k-coherence candidate set. `matches` has gx->centres * gy->centres
+ * entries. Returns TS_OK or TS_ERROR_OUT_OF_MEMORY. */
+TsStatus ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+                   const TsPass *pass, size_t k_use, uint32_t seed_stream, TsMatch *matches);
+
+/* E-step: every output pixel becomes the vote closest to the robust
+ * weighted mean of all matched neighbourhoods covering it; its source
+ * follows. Returns the number of pixels whose source changed. */
+size_t   ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+                   const TsMatch *matches, const TsHistogram *histogram);
+
+#endif

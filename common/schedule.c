@@ -1,0 +1,88 @@
+/* SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "schedule.h"
+#include "pyramid.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#define TS_MAX_K_LEVEL 30
+
+int
+ts_schedule_threads (void)
+{
+#ifdef _OPENMP
+  return omp_get_max_threads ();
+#else
+  return 1;
+#endif
+}
+
+/* k-1 similar neighbourhoods at the finest level, 3 more per coarser level. */
+static size_t
+k_for_level (int quality, size_t level)
+{
+  size_t k = (size_t) quality + 3 * level;
+  return k > TS_MAX_K_LEVEL ? TS_MAX_K_LEVEL : k;
+}
+
+size_t
+ts_schedule_max_candidates (int quality)
+{
+  return k_for_level (quality, 32);
+}
+
+size_t
+ts_schedule_levels (const TsImage *exemplar)
+{
+  return ts_pyramid_depth_for (exemplar->width, exemplar->height, TS_COARSEST_SIDE);
+}
+
+/* Largest odd size <= want that leaves at least a few valid centres in an
+ * ex_w x ex_h exemplar level. */
+static size_t
+fit_patch (size_t want, size_t ex_w, size_t ex_h)
+{
+  size_t side = ex_w < ex_h ? ex_w : ex_h;
+  size_t limit = side >= 6 ? side - 4 : side;  /* keep >= 5 centres per row */
+
+  if (want > limit)
+    want = limit;
+  if (want % 2 == 0)
+    want--;
+  return want < 1 ? 1 : want;
+}
+
+static void
+set_pass (TsPass *pass, size_t patch, size_t iterations)
+{
+  pass->patch = patch;
+  /* About w/4 (Kwatra et al.), but never every pixel: 2 is as good and
+   * four times cheaper. */
+  pass->spacing = patch / 4 > 2 ? patch / 4 : (patch >= 3 ? 2 : 1);
+  pass->max_iterations = iterations;
+  pass->propose_step = patch >= 7 ? 2 : 1;
+}
+
+void
+ts_schedule_level (const TsParams *params, size_t level, size_t levels,
+                   size_t ex_w, size_t ex_h, TsLevelPlan *plan)
+{
+  size_t large = params->patch_size ? (size_t) params->patch_size : (level == 0 ? 11 : 9);
+  size_t small = params->fine_patch_size ? (size_t) params->fine_patch_size : (level == 0 ? 7 : 5);
+  size_t iterations = params->max_iterations ? (size_t) params->max_iterations
+                      : (level + 1 == levels ? 6 : 3);
+
+  (void) levels;
+  if (small > large)
+    small = large;
+  large = fit_patch (large, ex_w, ex_h);
+  small = fit_patch (small, ex_w, ex_h);
+
+  plan->k_level = k_for_level (params->quality, level);
+  plan->k_use = plan->k_level;
+  plan->passes = 0;
+  set_pass (&plan->pass[plan->passes++], large, iterations);
+  if (small < large)
+    set_pass (&plan->pass[plan->passes++], small, iterations);
+}

@@ -1,0 +1,127 @@
+/* texsynth: example-based texture synthesis engine (public API).
+ * SPDX-License-Identifier: LGPL-3.0-or-later
+ *
+ * Plain C11, no GEGL/GIMP types. Images are CIE Lab (D50) with alpha,
+ * 4 floats per pixel in the order L, a, b, alpha (L 0..100, alpha 0..1),
+ * row-major, no padding: exactly babl's "CIE Lab alpha float".
+ *
+ * Every function is reentrant: the engine keeps no global mutable state, so
+ * several syntheses may run at once from different threads.
+ */
+#ifndef TEXSYNTH_H
+#define TEXSYNTH_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define TS_CHANNELS 4
+#define TS_MAX_OUTPUT_SIDE 16384
+#define TS_MIN_QUALITY 1
+#define TS_MAX_QUALITY 10
+#define TS_MIN_PATCH_SIZE 3
+#define TS_MAX_PATCH_SIZE 31
+#define TS_MAX_ITERATIONS 100
+#define TS_MESSAGE_SIZE 256
+
+typedef enum
+{
+  TS_OK = 0,
+  TS_ERROR_INVALID_ARGUMENT,     /* NULL pointer or inconsistent image    */
+  TS_ERROR_BAD_PARAMETER,        /* a parameter is out of its range       */
+  TS_ERROR_EMPTY_EXEMPLAR,       /* exemplar has no pixels                */
+  TS_ERROR_TRANSPARENT_EXEMPLAR, /* every exemplar pixel has alpha 0      */
+  TS_ERROR_EXEMPLAR_TOO_SMALL,   /* smaller than the smallest neighbourhood */
+  TS_ERROR_TOO_LARGE,            /* would need more memory than allowed   */
+  TS_ERROR_OUT_OF_MEMORY,        /* an allocation failed                  */
+  TS_ERROR_CANCELLED             /* the progress callback asked to stop   */
+} TsStatus;
+
+/* A short, static, human-readable description of a status. */
+const char *ts_status_string (TsStatus status);
+
+/* Details of a failure: the status and a message that says what was wrong
+ * and what to do (e.g. how much memory an output would need). */
+typedef struct
+{
+  TsStatus status;
+  char     message[TS_MESSAGE_SIZE];
+} TsError;
+
+/* A Lab+alpha float image; `pixels` holds width * height * TS_CHANNELS
+ * floats. The engine never frees caller images. */
+typedef struct
+{
+  size_t width;
+  size_t height;
+  float *pixels;
+} TsImage;
+
+/* Progress in [0, 1] with a short stage name. Return false to cancel:
+ * the engine then stops soon and returns TS_ERROR_CANCELLED. */
+typedef bool (*TsProgressFunc) (double fraction, const char *stage, void *user_data);
+
+typedef struct
+{
+  size_t   output_width;       /* 1 .. TS_MAX_OUTPUT_SIDE                     */
+  size_t   output_height;      /* 1 .. TS_MAX_OUTPUT_SIDE                     */
+  bool     wrap_x;             /* output neighbourhoods wrap horizontally:    */
+  bool     wrap_y;             /*   the result tiles seamlessly that way      */
+  int      quality;            /* 1 .. 10; k = quality + 1 candidates/pixel  */
+  uint32_t seed;               /* same seed, same result, any thread count   */
+  int      patch_size;         /* 0 = automatic; else odd, 3 .. 31: size of the
+                                  large neighbourhood of the first iterations */
+  int      fine_patch_size;    /* 0 = automatic; else odd, 3 .. patch_size   */
+  int      max_iterations;     /* 0 = automatic; else 1 .. 100 per size/level */
+  bool     histogram_matching; /* Kopf et al. 2007 vote re-weighting         */
+  size_t   memory_limit;       /* bytes; 0 = default (a quarter of RAM, at
+                                  least 1 GiB)                                */
+
+  /* Optional: start the finest level from these exemplar coordinates
+   * (2 int32 per output pixel, x then y) instead of random ones, e.g. the
+   * identity map to re-synthesise an image from itself. */
+  const int32_t *initial_source;
+  /* Optional, with `initial_source`: one weight per output pixel in [0, 1];
+   * a data term that keeps pixels with weight near 1 at their initial
+   * source (weight 1 never changes the pixel, 0 leaves it free). */
+  const float   *preserve;
+
+  /* Optional debug output: if not NULL, receives 2 int32 per output pixel,
+   * the exemplar (x, y) each output pixel was copied from. */
+  int32_t *source_map;
+} TsParams;
+
+/* Fill `params` with the defaults (512x512, quality default, seed 0, ...). */
+void ts_params_init (TsParams *params);
+
+/* Check `params` against `exemplar`. On failure fills `error` (may be NULL)
+ * and returns its status. Every entry point calls this first. */
+TsStatus ts_params_validate (const TsParams *params,
+                             const TsImage  *exemplar,
+                             TsError        *error);
+
+/* Peak memory a synthesis would need, in bytes. */
+TsStatus ts_estimate_memory (const TsParams *params,
+                             const TsImage  *exemplar,
+                             size_t         *bytes,
+                             TsError        *error);
+
+/* Synthesise into `output`, which the caller allocated with
+ * params->output_width x params->output_height pixels. On any failure
+ * `output` is left untouched. `progress` may be NULL. */
+TsStatus ts_synthesize (const TsParams *params,
+                        const TsImage  *exemplar,
+                        TsImage        *output,
+                        TsProgressFunc  progress,
+                        void           *user_data,
+                        TsError        *error);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* TEXSYNTH_H */

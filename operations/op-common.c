@@ -1,0 +1,183 @@
+/* Helpers shared by the texsynth GEGL operations.
+ * SPDX-License-Identifier: LGPL-3.0-or-later
+ */
+#include "op-common.h"
+
+#include <stdio.h>
+
+TsParams
+ts_op_default_params (void)
+{
+  TsParams params;
+
+  ts_params_init (&params);
+  return params;
+}
+
+static gboolean
+too_large (const GeglRectangle *rect)
+{
+  return rect->width > TS_MAX_OUTPUT_SIDE || rect->height > TS_MAX_OUTPUT_SIDE;
+}
+
+GeglRectangle
+ts_op_required_input (GeglOperation *operation)
+{
+  const GeglRectangle *box = gegl_operation_source_get_bounding_box (operation, "input");
+  GeglRectangle empty = { 0, 0, 0, 0 };
+
+  return box && !too_large (box) ? *box : empty;
+}
+
+gboolean
+ts_op_read_input (GeglOperation *operation,
+                  GeglBuffer    *input,
+                  TsImage       *image,
+                  gchar         *message,
+                  gsize          message_size)
+{
+  const GeglRectangle *box = gegl_operation_source_get_bounding_box (operation, "input");
+  GeglRectangle rect = { 0, 0, 0, 0 };
+  gsize floats;
+
+  image->width = image->height = 0;
+  image->pixels = NULL;
+  if (input && box)
+    rect = *box;
+  if (rect.width <= 0 || rect.height <= 0)
+    return TRUE;
+
+  /* Checked here as well as in the engine: reading a huge input just to be
+   * told it is too large could exhaust memory first. */
+  if (gegl_rectangle_is_infinite_plane (&rect))
+    {
+      snprintf (message, message_size,
+                "the exemplar is unbounded (e.g. a fill or noise without a crop); "
+                "crop it to at most %dx%d pixels", TS_MAX_OUTPUT_SIDE, TS_MAX_OUTPUT_SIDE);
+      return FALSE;
+    }
+  if (too_large (&rect))
+    {
+      snprintf (message, message_size,
+                "the exemplar is %dx%d; its sides must be at most %d pixels",
+                rect.width, rect.height, TS_MAX_OUTPUT_SIDE);
+      return FALSE;
+    }
+
+  floats = (gsize) rect.width * (gsize) rect.height * TS_CHANNELS;
+  image->pixels = g_try_malloc (floats * sizeof (float));
+  if (!image->pixels)
+    {
+      snprintf (message, message_size,
+                "out of memory reading the %dx%d exemplar (%.1f MiB)",
+                rect.width, rect.height, (double) (floats * sizeof (float)) / 1048576.0);
+      return FALSE;
+    }
+  gegl_buffer_get (input, &rect, 1.0, babl_format (TS_OP_FORMAT), image->pixels,
+                   GEGL_AUTO_ROWSTRIDE, GEGL_ABYSS_NONE);
+  image->width = (size_t) rect.width;
+  image->height = (size_t) rect.height;
+  return TRUE;
+}
+
+TsStatus
+ts_op_alloc_output (const TsParams *params,
+                    const TsImage  *exemplar,
+                    TsImage        *output,
+                    TsError        *error)
+{
+  TsStatus status;
+  gsize bytes;
+
+  output->width = output->height = 0;
+  output->pixels = NULL;
+  /* Validation includes the engine's memory estimate against its limit,
+   * so an impossible size is refused before the big allocation. */
+  status = ts_params_validate (params, exemplar, error);
+  if (status != TS_OK)
+    return status;
+
+  bytes = params->output_width * params->output_height * TS_CHANNELS * sizeof (float);
+  output->pixels = g_try_malloc (bytes);
+  if (!output->pixels)
+    {
+      if (error)
+        {
+          error->status = TS_ERROR_OUT_OF_MEMORY;
+          snprintf (error->message, sizeof error->message,
+                    "out of memory allocating the %zux%zu output (%.1f MiB)",
+                    params->output_width, params->output_height, (double) bytes / 1048576.0);
+        }
+      return TS_ERROR_OUT_OF_MEMORY;
+    }
+  output->width = params->output_width;
+  output->height = params->output_height;
+  return TS_OK;
+}
+
+void
+ts_op_progress_init (TsOpProgress *progress, GeglOperation *operation)
+{
+  progress->operation = operation;
+  g_mutex_init (&progress->lock);
+  progress->last_fraction = -1.0;
+  progress->last_stage = NULL;
+}
+
+void
+ts_op_progress_clear (TsOpProgress *progress)
+{
+  g_mutex_clear (&progress->lock);
+}
+
+bool
+ts_op_progress_func (double fraction, const char *stage, void *user_data)
+{
+  TsOpProgress *progress = user_data;
+
+  g_mutex_lock (&progress->lock);
+  /* Signal handlers (GIMP's progress bar) are slow: emit only on a new
+   * stage, every half percent, and at the end; never go backwards. */
+  if (fraction >= 1.0 || stage != progress->last_stage ||
+      fraction >= progress->last_fraction + 0.005)
+    {
+      if (fraction < progress->last_fraction)
+        fraction = progress->last_fraction;
+      progress->last_fraction = fraction;
+      progress->last_stage = stage;
+      gegl_operation_progress (progress->operation, CLAMP (fraction, 0.0, 1.0),
+                               (gchar *) (stage ? stage : ""));
+    }
+  g_mutex_unlock (&progress->lock);
+  return true; /* GEGL 0.4 has no way to cancel an op from outside */
+}
+
+void
+ts_op_write_output (GeglBuffer          *output,
+                    const GeglRectangle *roi,
+                    const TsImage       *image)
+{
+  GeglRectangle whole = { 0, 0, (gint) image->width, (gint) image->height };
+  GeglRectangle part;
+  gsize stride = image->width * TS_CHANNELS * sizeof (float);
+
+  if (!gegl_rectangle_intersect (&part, &whole, roi))
+    return;
+  gegl_buffer_set (output, &part, 0, babl_format (TS_OP_FORMAT),
+                   (const guchar *) image->pixels + part.y * stride
+                     + (gsize) part.x * TS_CHANNELS * sizeof (float),
+                   (gint) stride);
+}
+
+void
+ts_op_fail (GeglOperation       *operation,
+            GeglBuffer          *output,
+            const GeglRectangle *roi,
+            const gchar         *message)
+{
+  const gchar *name = gegl_operation_get_name (operation);
+
+  g_warning ("%s: %s", name ? name : "texsynth", message);
+  /* The output may be a cache that still holds an earlier result. */
+  gegl_buffer_clear (output, roi);
+}

@@ -1,0 +1,69 @@
+/* Helpers shared by the texsynth GEGL operations: buffer conversion,
+ * progress forwarding and the failure path. Compiled into each module.
+ * SPDX-License-Identifier: LGPL-3.0-or-later
+ */
+#ifndef TEXSYNTH_OP_COMMON_H
+#define TEXSYNTH_OP_COMMON_H
+
+#include <gegl-plugin.h>
+
+#include "texsynth.h"
+
+/* The engine's pixel layout, exactly (see texsynth.h). */
+#define TS_OP_FORMAT "CIE Lab alpha float"
+
+/* The engine's defaults, so the properties default to the same values
+ * (evaluated when the op class registers its properties). */
+TsParams ts_op_default_params (void);
+
+/* The region of "input" to render for any output: all of it, or nothing
+ * if it is larger than the engine accepts (e.g. an infinite plane such as
+ * gegl:color), which GEGL would otherwise try to render in full. */
+GeglRectangle ts_op_required_input (GeglOperation *operation);
+
+/* Read the whole "input" of `operation` from `input` into a newly
+ * allocated image (g_free its pixels). An empty or missing input gives a
+ * 0x0 image with NULL pixels, which the engine reports as empty; returns
+ * FALSE only if the copy cannot be allocated (then `message` says why). */
+gboolean ts_op_read_input (GeglOperation *operation,
+                           GeglBuffer    *input,
+                           TsImage       *image,
+                           gchar         *message,
+                           gsize          message_size);
+
+/* Allocate an output image of the size in `params`, after checking with
+ * the engine that the synthesis fits its memory limit. On failure fills
+ * `error` and returns its status. */
+TsStatus ts_op_alloc_output (const TsParams *params,
+                             const TsImage  *exemplar,
+                             TsImage        *output,
+                             TsError        *error);
+
+/* Forwards engine progress to gegl_operation_progress(). The engine may
+ * call it from worker threads, so calls are serialised and thinned out. */
+typedef struct
+{
+  GeglOperation *operation;
+  GMutex         lock;
+  gdouble        last_fraction;
+  const gchar   *last_stage;
+} TsOpProgress;
+
+void ts_op_progress_init  (TsOpProgress *progress, GeglOperation *operation);
+void ts_op_progress_clear (TsOpProgress *progress);
+bool ts_op_progress_func  (double fraction, const char *stage, void *user_data);
+
+/* Copy the part of `image` (placed at the origin) that lies in `roi` into
+ * `output`. */
+void ts_op_write_output (GeglBuffer          *output,
+                         const GeglRectangle *roi,
+                         const TsImage       *image);
+
+/* The defined result of a failed synthesis: warn "<op name>: <message>"
+ * and make `roi` of `output` fully transparent. */
+void ts_op_fail (GeglOperation       *operation,
+                 GeglBuffer          *output,
+                 const GeglRectangle *roi,
+                 const gchar         *message);
+
+#endif /* TEXSYNTH_OP_COMMON_H */

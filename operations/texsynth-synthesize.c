@@ -1,0 +1,233 @@
+/* texsynth:synthesize: grow a texture of any size from an example image.
+ * SPDX-License-Identifier: LGPL-3.0-or-later
+ *
+ * A whole-image operation: it reads the entire input (the exemplar), runs
+ * the engine once and produces the entire output, whatever region GEGL
+ * asks for; the output is cached so later requests are cheap.
+ */
+#include <glib/gi18n-lib.h>
+
+#include "op-common.h"
+
+#ifdef GEGL_PROPERTIES
+
+property_int (width, _("Width"), 512)
+  description (_("Width of the synthesised texture"))
+  value_range (1, TS_MAX_OUTPUT_SIDE)
+  ui_range    (16, 4096)
+  ui_meta     ("unit", "pixel-distance")
+  ui_meta     ("axis", "x")
+
+property_int (height, _("Height"), 512)
+  description (_("Height of the synthesised texture"))
+  value_range (1, TS_MAX_OUTPUT_SIDE)
+  ui_range    (16, 4096)
+  ui_meta     ("unit", "pixel-distance")
+  ui_meta     ("axis", "y")
+
+property_boolean (tileable, _("Tileable"), FALSE)
+  description (_("Make the result tile seamlessly: its left edge continues "
+                 "its right edge and its top edge its bottom edge"))
+
+property_int (quality, _("Quality"), ts_op_default_params ().quality)
+  description (_("Higher values compare more candidates per pixel: fewer "
+                 "visible seams and repetitions, but slower"))
+  value_range (TS_MIN_QUALITY, TS_MAX_QUALITY)
+
+property_seed (seed, _("Random seed"), rand)
+  description (_("The same seed with the same settings gives the same "
+                 "texture; change it for another variation"))
+
+property_int (patch_size, _("Patch size"), ts_op_default_params ().patch_size)
+  description (_("Size in pixels of the neighbourhoods compared in the "
+                 "first iterations of each level; larger keeps larger "
+                 "structures together. 0 chooses automatically; even "
+                 "values are rounded up to odd"))
+  value_range (0, TS_MAX_PATCH_SIZE)
+  ui_meta     ("role", "advanced")
+
+property_int (fine_patch_size, _("Fine patch size"), ts_op_default_params ().fine_patch_size)
+  description (_("Size in pixels of the neighbourhoods of the last "
+                 "iterations, at most the patch size; smaller gives "
+                 "sharper detail. 0 chooses automatically; even values "
+                 "are rounded up to odd"))
+  value_range (0, TS_MAX_PATCH_SIZE)
+  ui_meta     ("role", "advanced")
+
+property_int (iterations, _("Iterations"), ts_op_default_params ().max_iterations)
+  description (_("Maximum number of refinement iterations per level "
+                 "(0 chooses automatically)"))
+  value_range (0, TS_MAX_ITERATIONS)
+  ui_range    (0, 20)
+  ui_meta     ("role", "advanced")
+
+property_boolean (histogram_matching, _("Histogram matching"),
+                  ts_op_default_params ().histogram_matching)
+  description (_("Keep the colour distribution of the result close to the "
+                 "exemplar's, so rare colours are neither lost nor "
+                 "overused"))
+  ui_meta     ("role", "advanced")
+
+#else
+
+#define GEGL_OP_FILTER
+#define GEGL_OP_NAME     texsynth_synthesize
+#define GEGL_OP_C_SOURCE texsynth-synthesize.c
+
+/* gegl-op.h's generated boilerplate trips -Wextra; our own code must not. */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wcast-function-type"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#include "gegl-op.h"
+#pragma GCC diagnostic pop
+
+static void
+prepare (GeglOperation *operation)
+{
+  const Babl *format = babl_format (TS_OP_FORMAT);
+
+  gegl_operation_set_format (operation, "input", format);
+  gegl_operation_set_format (operation, "output", format);
+}
+
+/* The output has the requested size at the origin, whatever the input's
+ * size and position. */
+static GeglRectangle
+get_bounding_box (GeglOperation *operation)
+{
+  GeglProperties *o = GEGL_PROPERTIES (operation);
+  GeglRectangle box = { 0, 0, o->width, o->height };
+
+  return box;
+}
+
+/* Every output pixel may copy from anywhere in the exemplar. */
+static GeglRectangle
+get_required_for_output (GeglOperation       *operation,
+                         const gchar         *input_pad G_GNUC_UNUSED,
+                         const GeglRectangle *roi G_GNUC_UNUSED)
+{
+  return ts_op_required_input (operation);
+}
+
+/* Synthesis is global: computing any part means computing all of it. */
+static GeglRectangle
+get_cached_region (GeglOperation       *operation,
+                   const GeglRectangle *roi G_GNUC_UNUSED)
+{
+  return get_bounding_box (operation);
+}
+
+static GeglRectangle
+get_invalidated_by_change (GeglOperation       *operation,
+                           const gchar         *input_pad G_GNUC_UNUSED,
+                           const GeglRectangle *input_region G_GNUC_UNUSED)
+{
+  return get_bounding_box (operation);
+}
+
+/* The engine wants odd sizes; GUI sliders give any integer. */
+static int
+odd_size (int size)
+{
+  if (size <= 0)
+    return 0;
+  if (size < TS_MIN_PATCH_SIZE)
+    return TS_MIN_PATCH_SIZE;
+  return size | 1;
+}
+
+static void
+fill_params (GeglProperties *o, TsParams *params)
+{
+  ts_params_init (params);
+  params->output_width = (size_t) o->width;
+  params->output_height = (size_t) o->height;
+  params->wrap_x = params->wrap_y = o->tileable;
+  params->quality = o->quality;
+  params->seed = o->seed;
+  params->patch_size = odd_size (o->patch_size);
+  params->fine_patch_size = odd_size (o->fine_patch_size);
+  /* Only a combination the user chose explicitly can conflict. */
+  if (params->patch_size && params->fine_patch_size > params->patch_size)
+    params->fine_patch_size = params->patch_size;
+  params->max_iterations = o->iterations;
+  params->histogram_matching = o->histogram_matching;
+}
+
+static gboolean
+process (GeglOperation       *operation,
+         GeglBuffer          *input,
+         GeglBuffer          *output,
+         const GeglRectangle *roi,
+         gint                 level G_GNUC_UNUSED)
+{
+  GeglProperties *o = GEGL_PROPERTIES (operation);
+  TsParams params;
+  TsImage exemplar, result = { 0, 0, NULL };
+  TsError error = { TS_OK, "" };
+  TsOpProgress progress;
+  TsStatus status;
+
+  fill_params (o, &params);
+  if (!ts_op_read_input (operation, input, &exemplar, error.message, sizeof error.message))
+    {
+      ts_op_fail (operation, output, roi, error.message);
+      return TRUE;
+    }
+
+  status = ts_op_alloc_output (&params, &exemplar, &result, &error);
+  if (status == TS_OK)
+    {
+      ts_op_progress_init (&progress, operation);
+      ts_op_progress_func (0.0, "starting", &progress);
+      status = ts_synthesize (&params, &exemplar, &result,
+                              ts_op_progress_func, &progress, &error);
+      ts_op_progress_func (1.0, "done", &progress);
+      ts_op_progress_clear (&progress);
+    }
+
+  /* A failure still yields a defined (transparent) image, and TRUE, so
+   * that a graph goes on rendering and the warning says what went wrong. */
+  if (status == TS_OK)
+    ts_op_write_output (output, roi, &result);
+  else
+    ts_op_fail (operation, output, roi,
+                error.message[0] ? error.message : ts_status_string (status));
+
+  g_free (result.pixels);
+  g_free (exemplar.pixels);
+  return TRUE;
+}
+
+static void
+gegl_op_class_init (GeglOpClass *klass)
+{
+  GeglOperationClass       *operation_class = GEGL_OPERATION_CLASS (klass);
+  GeglOperationFilterClass *filter_class = GEGL_OPERATION_FILTER_CLASS (klass);
+
+  operation_class->prepare                   = prepare;
+  operation_class->get_bounding_box          = get_bounding_box;
+  operation_class->get_required_for_output   = get_required_for_output;
+  operation_class->get_cached_region         = get_cached_region;
+  operation_class->get_invalidated_by_change = get_invalidated_by_change;
+  /* The engine has its own threads; GEGL must not split the work. */
+  operation_class->threaded                  = FALSE;
+  operation_class->want_in_place             = FALSE;
+  operation_class->cache_policy              = GEGL_CACHE_POLICY_ALWAYS;
+  filter_class->process                      = process;
+
+  gegl_operation_class_set_keys (operation_class,
+    "name",               "texsynth:synthesize",
+    "title",              _("Texture Synthesis"),
+    "categories",         "render:tile",
+    "position-dependent", "true",
+    "description",        _("Synthesises a new texture of any size that looks "
+                            "like the input image (the exemplar) but does not "
+                            "repeat it, optionally tileable"),
+    "gimp:menu-path",     "<Image>/Filters/Render/Pattern",
+    "gimp:menu-label",    _("Texture Synthesis..."),
+    NULL);
+}
+
+#endif

@@ -1,0 +1,235 @@
+/* Whole-engine properties: exact exemplar pixels, determinism across
+ * thread counts, seeds, transparency, cancel, tiny inputs, the E-step. */
+#include "test-util.h"
+#include "level.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+typedef struct
+{
+  double last;
+  int    calls;
+  int    cancel_after;  /* 0 = never */
+  bool   monotonic;
+} Progress;
+
+static bool
+on_progress (double fraction, const char *stage, void *data)
+{
+  Progress *p = data;
+  (void) stage;
+  p->monotonic &= fraction >= p->last && fraction <= 1.0;
+  p->last = fraction;
+  p->calls++;
+  return p->cancel_after == 0 || p->calls < p->cancel_after;
+}
+
+static TsStatus
+run (const TsImage *ex, TsParams *p, TsImage *out, int32_t *sources, Progress *progress)
+{
+  TsError error;
+  TsStatus status;
+  out->width = p->output_width;
+  out->height = p->output_height;
+  out->pixels = malloc (out->width * out->height * TS_CHANNELS * sizeof (float));
+  p->source_map = sources;
+  status = ts_synthesize (p, ex, out, progress ? on_progress : NULL, progress, &error);
+  if (status != TS_OK && status != TS_ERROR_CANCELLED)
+    fprintf (stderr, "synthesis failed: %s\n", error.message);
+  return status;
+}
+
+static void
+test_exact_and_deterministic (void)
+{
+  TsImage ex, a, b, c;
+  TsParams p;
+  size_t n = 96 * 80;
+  int32_t *sources = malloc (n * 2 * sizeof (int32_t));
+  Progress progress = { 0, 0, 0, true };
+
+  test_load_exemplar ("bark.png", &ex);
+  ts_params_init (&p);
+  p.output_width = 96;
+  p.output_height = 80;
+  p.seed = 11;
+#ifdef _OPENMP
+  omp_set_num_threads (1);
+#endif
+  CHECK (run (&ex, &p, &a, sources, &progress) == TS_OK, "synthesis");
+  CHECK (progress.monotonic && progress.calls > 3 && progress.last == 1.0,
+         "progress monotonic to 1 (%d calls, last %f)", progress.calls, progress.last);
+  /* Every output pixel is exactly the exemplar pixel its source names. */
+  size_t bad = 0;
+  for (size_t i = 0; i < n; i++)
+    {
+      int32_t x = sources[2 * i], y = sources[2 * i + 1];
+      if (x < 0 || y < 0 || (size_t) x >= ex.width || (size_t) y >= ex.height ||
+          memcmp (a.pixels + i * 4, ex.pixels + ((size_t) y * ex.width + (size_t) x) * 4, 16) != 0)
+        bad++;
+    }
+  CHECK (bad == 0, "%zu pixels differ from their source", bad);
+#ifdef _OPENMP
+  omp_set_num_threads (2);
+#endif
+  CHECK (run (&ex, &p, &b, NULL, NULL) == TS_OK, "synthesis");
+  CHECK (memcmp (a.pixels, b.pixels, n * 16) == 0, "1 and 2 threads give identical results");
+  p.seed = 12;
+  CHECK (run (&ex, &p, &c, NULL, NULL) == TS_OK, "synthesis");
+  CHECK (memcmp (a.pixels, c.pixels, n * 16) != 0, "another seed gives another result");
+  free (a.pixels);
+  free (b.pixels);
+  free (c.pixels);
+  free (ex.pixels);
+  free (sources);
+}
+
+static void
+test_transparent_never_used (void)
+{
+  TsImage ex, out;
+  TsParams p;
+  size_t n = 70 * 50;
+  int32_t *sources = malloc (n * 2 * sizeof (int32_t));
+
+  test_noise_image (&ex, 60, 60, 5);
+  for (size_t y = 0; y < 60; y++)
+    for (size_t x = 0; x < 60; x++)
+      if (x < 25 || (x + y) % 7 == 0)
+        ex.pixels[(y * 60 + x) * TS_CHANNELS + 3] = 0.0f;
+  ts_params_init (&p);
+  p.output_width = 70;
+  p.output_height = 50;
+  CHECK (run (&ex, &p, &out, sources, NULL) == TS_OK, "synthesis");
+  size_t transparent = 0;
+  for (size_t i = 0; i < n; i++)
+    if (out.pixels[i * TS_CHANNELS + 3] <= 0.0f)
+      transparent++;
+  CHECK (transparent == 0, "%zu output pixels came from transparent sources", transparent);
+  free (out.pixels);
+  free (ex.pixels);
+  free (sources);
+}
+
+static void
+test_cancel_and_errors (void)
+{
+  TsImage ex, out;
+  TsParams p;
+  TsError error;
+  Progress progress = { 0, 0, 2, true };
+
+  test_noise_image (&ex, 40, 40, 2);
+  ts_params_init (&p);
+  p.output_width = p.output_height = 64;
+  out.width = out.height = 64;
+  out.pixels = malloc (64 * 64 * 16);
+  for (size_t i = 0; i < 64 * 64 * 4; i++)
+    out.pixels[i] = -7.0f;
+  CHECK (ts_synthesize (&p, &ex, &out, on_progress, &progress, &error) == TS_ERROR_CANCELLED,
+         "cancel is honoured");
+  CHECK (strstr (error.message, "cancelled") != NULL, "cancel message: %s", error.message);
+  bool untouched = true;
+  for (size_t i = 0; i < 64 * 64 * 4; i++)
+    untouched &= out.pixels[i] == -7.0f;
+  CHECK (untouched, "a cancelled synthesis leaves the output untouched");
+  out.width = 63;
+  CHECK (ts_synthesize (&p, &ex, &out, NULL, NULL, &error) == TS_ERROR_INVALID_ARGUMENT,
+         "output of the wrong size is refused");
+  free (out.pixels);
+  free (ex.pixels);
+}
+
+static void
+test_tiny_sizes (void)
+{
+  static const size_t sizes[][4] = { { 3, 3, 1, 1 }, { 3, 3, 50, 2 }, { 5, 4, 7, 7 },
+                                     { 200, 3, 33, 9 }, { 16, 16, 300, 1 } };
+  for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
+    for (int wrap = 0; wrap < 2; wrap++)
+      {
+        TsImage ex, out;
+        TsParams p;
+        test_noise_image (&ex, sizes[i][0], sizes[i][1], 9);
+        ts_params_init (&p);
+        p.output_width = sizes[i][2];
+        p.output_height = sizes[i][3];
+        p.wrap_x = p.wrap_y = wrap;
+        p.patch_size = 15;
+        CHECK (run (&ex, &p, &out, NULL, NULL) == TS_OK, "%zux%zu -> %zux%zu wrap %d",
+               sizes[i][0], sizes[i][1], sizes[i][2], sizes[i][3], wrap);
+        free (out.pixels);
+        free (ex.pixels);
+      }
+}
+
+/* E-step on a hand-made state: coherent matches reproduce the exemplar
+ * shifted; a heavier group of matches wins a pixel. */
+static void
+test_estep (void)
+{
+  TsImage ex;
+  TsAxisGrid gx, gy;
+  TsLevelState state;
+  TsMatch matches[36];
+  int32_t sources[36];
+
+  test_noise_image (&ex, 12, 12, 4);
+  memset (&state, 0, sizeof state);
+  state.exemplar = &ex;
+  state.width = state.height = 6;
+  state.wrap_x = state.wrap_y = true;
+  state.source = sources;
+  CHECK (ts_image_alloc (&state.output, 6, 6) == TS_OK, "alloc");
+  CHECK (ts_axis_grid_init (&gx, 6, 1, 1, 0, true) == TS_OK && gx.centres == 6, "grid x");
+  CHECK (ts_axis_grid_init (&gy, 6, 1, 1, 0, true) == TS_OK && gy.centres == 6, "grid y");
+  for (size_t y = 0; y < 6; y++)
+    for (size_t x = 0; x < 6; x++)
+      {
+        matches[y * 6 + x].centre = (int32_t) ((y + 3) * 12 + x + 3);
+        matches[y * 6 + x].distance = 1.0f;
+        matches[y * 6 + x].weight = 1.0f;
+        sources[y * 6 + x] = -1;
+      }
+  /* Wrapped neighbourhoods of edge centres vote from beyond the edge. */
+  size_t changed = ts_estep (&state, &gx, &gy, matches, NULL);
+  CHECK (changed == 36, "all sources set (%zu)", changed);
+  bool shifted = true;
+  for (size_t y = 1; y < 5; y++)
+    for (size_t x = 1; x < 5; x++)
+      shifted &= sources[y * 6 + x] == (int32_t) ((y + 3) * 12 + x + 3);
+  CHECK (shifted, "coherent matches reproduce the exemplar");
+  /* Pixel (2,2) is covered by centres (1..3, 1..3): give five of them a
+   * heavier, different match; the pixel follows them. */
+  static const int heavy[5][2] = { { 1, 1 }, { 2, 1 }, { 3, 1 }, { 1, 2 }, { 2, 2 } };
+  for (int i = 0; i < 5; i++)
+    {
+      TsMatch *m = &matches[heavy[i][1] * 6 + heavy[i][0]];
+      m->centre = (int32_t) ((heavy[i][1] + 5) * 12 + heavy[i][0] + 5);
+      m->weight = 10.0f;
+    }
+  ts_estep (&state, &gx, &gy, matches, NULL);
+  CHECK (sources[2 * 6 + 2] == 7 * 12 + 7, "the heavy votes win: source %d", sources[2 * 6 + 2]);
+  CHECK (memcmp (ts_image_pixel (&state.output, 2, 2), ex.pixels + (7 * 12 + 7) * 4, 16) == 0,
+         "the pixel is the winning exemplar pixel");
+  ts_axis_grid_free (&gx);
+  ts_axis_grid_free (&gy);
+  ts_image_free (&state.output);
+  free (ex.pixels);
+}
+
+int
+main (void)
+{
+  test_estep ();
+  test_exact_and_deterministic ();
+  test_transparent_never_used ();
+  test_cancel_and_errors ();
+  test_tiny_sizes ();
+  return test_finish ("test-synthesize");
+}

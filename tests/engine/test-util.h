@@ -1,0 +1,31 @@
+/* Small helpers shared by the engine tests. */
+#ifndef TS_TEST_UTIL_H
+#define TS_TEST_UTIL_H
+
+#include "texsynth.h"
+
+#include <stdio.h>
+
+extern int ts_test_failures;
+
+#define CHECK(cond, ...)                                                    \
+  do {                                                                      \
+    if (!(cond)) {                                                          \
+      ts_test_failures++;                                                   \
+      fprintf (stderr, "%s:%d: CHECK failed: %s: ", __FILE__, __LINE__, #cond); \
+      fprintf (stderr, __VA_ARGS__);                                        \
+      fputc ('\n', stderr);                                                 \
+    }                                                                       \
+  } while (0)
+
+/* Exit status for main(): 0 if no CHECK failed. */
+int test_finish (const char *name);
+
+/* Loads `name` (e.g. "bark.png") from $TEXSYNTH_EXEMPLARS as Lab+alpha;
+ * aborts the test with a message if it cannot. Free with free(). */
+void test_load_exemplar (const char *name, TsImage *image);
+
+/* Deterministic smooth-noise Lab image, opaque. */
+void test_noise_image (TsImage *image, size_t width, size_t height, unsigned seed);
+
+#endif

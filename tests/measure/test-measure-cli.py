@@ -1,0 +1,221 @@
+#!/usr/bin/env python3
+# Property tests of the texsynth-measure command-line tool on real
+# exemplars. Usage: test-measure-cli.py TEXSYNTH_MEASURE MEASURE_FIXTURE
+# Needs $TEXSYNTH_EXEMPLARS (folder of PNG exemplars). Standard library only.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+MEASURE, FIXTURE = sys.argv[1], sys.argv[2]
+EXEMPLARS = os.environ.get("TEXSYNTH_EXEMPLARS", "")
+failures = []
+
+
+def check(cond, message):
+    if not cond:
+        failures.append(message)
+        print("FAIL: " + message, file=sys.stderr)
+
+
+def run(*args):
+    p = subprocess.run([MEASURE, *args], capture_output=True, text=True, timeout=600)
+    return p.returncode, p.stdout, p.stderr
+
+
+def measure(exemplar, result, *options):
+    """The measures as a dict, from --json output."""
+    code, out, err = run(exemplar, result, "--json", *options)
+    if code != 0:
+        raise RuntimeError("texsynth-measure %s %s %s failed (%d): %s"
+                           % (exemplar, result, " ".join(options), code, err))
+    return json.loads(out)
+
+
+def fixture(*args):
+    subprocess.run([FIXTURE, *args], check=True, timeout=300)
+
+
+def size_of(path):
+    # PNG IHDR: width and height, big-endian, at bytes 16..24.
+    with open(path, "rb") as f:
+        head = f.read(24)
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
+def main():
+    if not os.path.isdir(EXEMPLARS):
+        print("TEXSYNTH_EXEMPLARS is not a folder: skipping", file=sys.stderr)
+        return 77
+    names = sorted(n for n in os.listdir(EXEMPLARS) if n.endswith(".png"))
+    check(len(names) > 0, "no exemplars in " + EXEMPLARS)
+    ex = {n: os.path.join(EXEMPLARS, n) for n in names}
+    tmp = tempfile.mkdtemp(prefix="texsynth-measure-test-")
+    t = lambda name: os.path.join(tmp, name)
+
+    # --- every exemplar against itself: perfect scores --------------------
+    for n in names:
+        start = time.monotonic()
+        m = measure(ex[n], ex[n])
+        print("%-14s self: coherence %.4f completeness %.4f copy %.4f sharpness %.4f (%.2f s)"
+              % (n, m["coherence"], m["completeness"], m["copy"], m["sharpness"],
+                 time.monotonic() - start))
+        check(m["coherence"] < 0.01, "%s self coherence %r" % (n, m["coherence"]))
+        check(m["completeness"] < 0.01, "%s self completeness %r" % (n, m["completeness"]))
+        check(m["copy"] > 0.99, "%s self copy %r" % (n, m["copy"]))
+        check(abs(m["sharpness"] - 1) < 0.01, "%s self sharpness %r" % (n, m["sharpness"]))
+        check(m["seam"] is None and m["tileable"] == "none", "%s: seam without --tileable" % n)
+
+    # --- text output format ---------------------------------------------
+    first = ex[names[0]]
+    code, out, err = run(first, first)
+    keys = [line.split(":")[0] for line in out.splitlines()]
+    check(code == 0 and keys == ["coherence", "completeness", "copy", "sharpness"],
+          "text output: %r" % out)
+    code, out, err = run("--tileable", first, first)
+    keys = [line.split(":")[0] for line in out.splitlines()]
+    check(code == 0 and "seam" in keys, "--tileable prints seam: %r" % out)
+    for line in out.splitlines():
+        name, _, value = line.partition(": ")
+        try:
+            float(value)
+        except ValueError:
+            check(False, "not 'name: value': %r" % line)
+
+    # --- seams -------------------------------------------------------------
+    # A crop that is not tileable (odd offsets cut the pattern's period),
+    # tiled 2x2: its wrap-around edges are seams, its inside is verbatim.
+    seam_names = [n for n in ("bark.png", "cracked.png", "stone33.png", "granite1.png",
+                              "rock.png", "wood1.png") if n in ex]
+    for n in seam_names:
+        w, h = size_of(ex[n])
+        cw, ch = w - 17, h - 13
+        crop, tiled = t("crop-" + n), t("tiled-" + n)
+        fixture("crop", ex[n], crop, "5", "7", str(cw), str(ch))
+        fixture("tile", crop, tiled, "2", "2")
+        for option in ("--tileable", "--tileable=x", "--tileable=y"):
+            m = measure(crop, tiled, option)
+            print("%-14s 2x2 tiling of a crop %s: seam %.3f" % (n, option, m["seam"]))
+            check(m["seam"] > 1.1, "%s tiled crop %s: seam %r, want > 1.1" % (n, option, m["seam"]))
+        # Against an exemplar holding every wrapped window (the crop tiled),
+        # the crop itself is seamless: its wrapped windows are all there.
+        for result in (crop, t("rolled-" + n)):
+            if result != crop:
+                fixture("roll", crop, result, str(cw // 3), str(ch // 2))
+            m = measure(tiled, result, "--tileable")
+            check(0.9 < m["seam"] < 1.1 and m["coherence"] < 0.01,
+                  "%s crop vs its tiling: seam %r coherence %r" % (n, m["seam"], m["coherence"]))
+        # One direction only: tiled horizontally, the crop wraps seamlessly
+        # in x but not in y.
+        wide = t("wide-" + n)
+        fixture("tile", crop, wide, "2", "1")
+        mx = measure(wide, crop, "--tileable=x")
+        my = measure(wide, crop, "--tileable=y")
+        mxy = measure(wide, crop, "--tileable")
+        check(0.9 < mx["seam"] < 1.1 and mx["tileable"] == "x", "%s x: seam %r" % (n, mx["seam"]))
+        check(my["seam"] > 1.1 and my["tileable"] == "y", "%s y: seam %r" % (n, my["seam"]))
+        check(mxy["seam"] > 1.1, "%s xy: seam %r" % (n, mxy["seam"]))
+
+    # A collage of exemplar blocks whose blocks straddle the edges intact
+    # tiles as well as its inside; the same collage cut at block edges not.
+    for n in ("bluemetal.png", "land1.png"):
+        if n not in ex:
+            continue
+        wrapped, cut = t("collage-wrapped-" + n), t("collage-cut-" + n)
+        fixture("blocks", ex[n], wrapped, "256", "256", "32", "4", "16")
+        fixture("blocks", ex[n], cut, "256", "256", "32", "4", "0")
+        start = time.monotonic()
+        mw = measure(ex[n], wrapped, "--tileable")
+        print("%-14s 256x256 collage vs 256x256 exemplar: %.2f s" % (n, time.monotonic() - start))
+        mc = measure(ex[n], cut, "--tileable")
+        check(mw["seam"] < 1.1, "%s tileable collage: seam %r" % (n, mw["seam"]))
+        check(mc["seam"] > 1.1, "%s collage cut at the edge: seam %r" % (n, mc["seam"]))
+        check(abs(mw["coherence"] - mc["coherence"]) < 1e-3,
+              "%s: same windows on the torus, same coherence" % n)
+        check(0.5 < mw["coherence"] < 20 and mw["copy"] < 0.1,
+              "%s collage: coherence %r copy %r" % (n, mw["coherence"], mw["copy"]))
+
+    # --- blur: sharpness well below 1 ---------------------------------------
+    for n in ("bark.png", "brick.png", "java.png", "3dweave.png"):
+        if n in ex:
+            blurred = t("blur-" + n)
+            fixture("blur", ex[n], blurred, "4")
+            m = measure(ex[n], blurred)
+            check(m["sharpness"] < 0.7, "%s blurred: sharpness %r" % (n, m["sharpness"]))
+            check(m["coherence"] > 1 and m["copy"] < 0.2,
+                  "%s blurred: coherence %r copy %r" % (n, m["coherence"], m["copy"]))
+
+    # --- noise: nothing like the exemplar -----------------------------------
+    fixture("noise", t("noise.png"), "64", "64", "3")
+    for n in ("java.png", "leopard.png", "parque1.png"):
+        if n in ex:
+            m = measure(ex[n], t("noise.png"))
+            self_m = measure(ex[n], ex[n])
+            check(m["coherence"] > 15 and m["completeness"] > 10 and m["copy"] < 0.01,
+                  "%s vs noise: %r" % (n, m))
+            check(m["coherence"] > self_m["coherence"] + 15, "%s noise vs self" % n)
+
+    # --- copy ---------------------------------------------------------------
+    for n in ("brick.png", "wood1.png", "granite1.png"):
+        if n not in ex:
+            continue
+        w, h = size_of(ex[n])
+        tiled, rolled = t("tile22-" + n), t("roll-" + n)
+        fixture("tile", ex[n], tiled, "2", "2")
+        fixture("roll", ex[n], rolled, str(w // 2 + 3), str(h // 2 - 5))
+        m = measure(ex[n], tiled)
+        check(m["copy"] > 0.99, "%s 2x2 tiling: copy %r" % (n, m["copy"]))
+        m = measure(ex[n], rolled)
+        check(0.1 < m["copy"] < 0.5, "%s rolled: copy %r, want a quadrant" % (n, m["copy"]))
+        m = measure(ex[n], rolled, "--tileable")
+        check(m["copy"] > 0.99, "%s rolled, tileable: copy %r, want 1" % (n, m["copy"]))
+
+    # --- bigger results -----------------------------------------------------
+    if "canyons2.png" in ex:
+        small, big = t("c128.png"), t("c128-collage-1024.png")
+        fixture("crop", ex["canyons2.png"], small, "0", "0", "128", "128")
+        fixture("blocks", small, big, "1024", "1024", "32", "9")
+        start = time.monotonic()
+        m = measure(small, big)
+        print("1024x1024 collage vs 128x128 exemplar: %.2f s" % (time.monotonic() - start))
+        check(m["completeness"] < 1.5 and m["copy"] < 0.2, "1024 collage: %r" % m)
+
+    # --- errors -------------------------------------------------------------
+    code, out, err = run(t("missing.png"), first)
+    check(code == 2 and "cannot read" in err and "missing.png" in err,
+          "missing file: %d %r" % (code, err))
+    code, out, err = run(first, t("missing.png"))
+    check(code == 2 and "missing.png" in err, "missing result: %d %r" % (code, err))
+    with open(t("not-an-image.png"), "w") as f:
+        f.write("hello\n")
+    code, out, err = run(first, t("not-an-image.png"))
+    check(code == 2 and "not-an-image.png" in err, "not an image: %d %r" % (code, err))
+    fixture("crop", first, t("tiny.png"), "0", "0", "6", "40")
+    code, out, err = run(first, t("tiny.png"))
+    check(code == 2 and "7x7" in err, "too small: %d %r" % (code, err))
+    code, out, err = run("--bogus", first, first)
+    check(code == 2 and "unknown option '--bogus'" in err, "bad option: %d %r" % (code, err))
+    code, out, err = run("--tileable=z", first, first)
+    check(code == 2 and "--tileable=z" in err, "bad --tileable: %d %r" % (code, err))
+    code, out, err = run(first)
+    check(code == 2 and "missing RESULT" in err, "one argument: %d %r" % (code, err))
+    code, out, err = run()
+    check(code == 2 and err, "no arguments: %d %r" % (code, err))
+    code, out, err = run(first, first, first)
+    check(code == 2 and "too many" in err, "three arguments: %d %r" % (code, err))
+    code, out, err = run("--help")
+    check(code == 0 and "Usage: texsynth-measure" in out and "--tileable=x" in out,
+          "--help: %d" % code)
+
+    if failures:
+        print("%d check(s) failed" % len(failures), file=sys.stderr)
+        return 1
+    print("all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

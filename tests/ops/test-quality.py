@@ -1,0 +1,124 @@
+# Quality of texsynth:synthesize on every exemplar, measured by
+# texsynth-measure: synthesise SIZExSIZE (plain and tileable) through the
+# gegl tool, print a table, and check the medians against thresholds.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+#
+# Usage: test-quality.py [--measure PATH] [--size N] [--seed N] [--keep DIR]
+#                        [--only NAME,...]
+
+import argparse
+import glob
+import json
+import os
+import statistics
+import subprocess
+import time
+
+import tsops
+from tsops import check, note
+
+# Medians over the exemplars of the plain results (see texsynth-measure
+# --help for the definitions): (measure, "max" or "min", bound).
+PLAIN_LIMITS = [
+    ("coherence", "max", 1.3),
+    ("completeness", "max", 0.9),
+    ("copy", "max", 0.35),
+    ("sharpness", "min", 0.9),
+]
+SEAM_MAX = 1.10              # tileable: on every exemplar
+TILE_COHERENCE_SLACK = 1.15  # tileable coherence median / plain median
+
+parser = argparse.ArgumentParser(description="Quality of texsynth:synthesize on every exemplar")
+parser.add_argument("--measure", default=os.environ.get("TEXSYNTH_MEASURE"),
+                    help="path of texsynth-measure")
+parser.add_argument("--size", type=int, default=256)
+parser.add_argument("--seed", type=int, default=1)
+parser.add_argument("--keep", help="keep the results in this folder")
+parser.add_argument("--only", help="comma-separated exemplar names (without .png)")
+args = parser.parse_args()
+
+if not args.measure or not os.access(args.measure, os.X_OK):
+    tsops.die("texsynth-measure not found (give --measure or TEXSYNTH_MEASURE): %s" % args.measure)
+tsops.require_op()
+outdir = args.keep or tsops.workdir()
+os.makedirs(outdir, exist_ok=True)
+
+exemplars = sorted(glob.glob(os.path.join(tsops.exemplars_dir(), "*.png")))
+if args.only:
+    wanted = set(args.only.split(","))
+    exemplars = [e for e in exemplars if os.path.basename(e)[:-4] in wanted]
+if not exemplars:
+    tsops.die("no exemplars in %s" % tsops.exemplars_dir())
+
+
+def measure(exemplar, result, tileable):
+    cmd = [args.measure, "--json"] + (["--tileable"] if tileable else []) + [exemplar, result]
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode != 0:
+        tsops.die("%s failed:\n%s%s" % (" ".join(cmd), proc.stdout, proc.stderr))
+    text = proc.stdout.strip()
+    try:
+        values = json.loads(text if text.startswith("{") else "{%s}" % text)
+    except ValueError:
+        values = {}
+        for line in text.splitlines():
+            key, _, value = line.partition(":")
+            values[key.strip()] = float(value)
+    return {k: (float("nan") if v is None else float(v)) for k, v in values.items()
+            if v is None or isinstance(v, (int, float))}
+
+
+def synthesize(exemplar, name, tileable):
+    result = os.path.join(outdir, "%s-%s.png" % (name, "tile" if tileable else "plain"))
+    start = time.monotonic()
+    code, _, err = tsops.synthesize_cli(exemplar, result, width=args.size, height=args.size,
+                                        seed=args.seed, tileable=tileable)
+    seconds = time.monotonic() - start
+    warnings = tsops.op_warnings(err)
+    if code != 0 or warnings or not os.path.isfile(result):
+        tsops.die("synthesis from %s failed (exit %d):\n%s" % (exemplar, code, err))
+    return measure(exemplar, result, tileable), seconds
+
+
+rows = []
+header = "%-12s %7s %9s %9s %6s %6s %6s | %9s %6s %6s %6s" % (
+    "exemplar", "size", "coherence", "complete", "copy", "sharp", "secs",
+    "coherence", "seam", "ratio", "secs")
+note("%-12s %7s %s | %s" % ("", "", ("plain %dx%d" % (args.size, args.size)).center(49),
+                            "tileable".center(31)))
+note(header)
+note("-" * len(header))
+for path in exemplars:
+    name = os.path.basename(path)[:-4]
+    w, h, _ = tsops.load(path)
+    plain, plain_secs = synthesize(path, name, False)
+    tile, tile_secs = synthesize(path, name, True)
+    ratio = tile["coherence"] / plain["coherence"] if plain["coherence"] > 0 else float("inf")
+    rows.append((name, plain, tile, ratio))
+    note("%-12s %7s %9.3f %9.3f %6.3f %6.3f %6.1f | %9.3f %6.3f %6.2f %6.1f" % (
+        name, "%dx%d" % (w, h), plain["coherence"], plain["completeness"], plain["copy"],
+        plain["sharpness"], plain_secs, tile["coherence"], tile["seam"], ratio, tile_secs))
+
+medians = {key: statistics.median(r[1][key] for r in rows)
+           for key in ("coherence", "completeness", "copy", "sharpness")}
+tile_coherence = statistics.median(r[2]["coherence"] for r in rows)
+note("-" * len(header))
+note("%-12s %7s %9.3f %9.3f %6.3f %6.3f %6s | %9.3f %6.3f %6.2f" % (
+    "median", "", medians["coherence"], medians["completeness"], medians["copy"],
+    medians["sharpness"], "", tile_coherence, statistics.median(r[2]["seam"] for r in rows),
+    statistics.median(r[3] for r in rows)))
+if args.keep:
+    note("results in %s" % outdir)
+note("")
+
+for key, kind, bound in PLAIN_LIMITS:
+    value = medians[key]
+    ok = value <= bound if kind == "max" else value >= bound
+    check(ok, "median %s %.3f %s %.2f" % (key, value, "<=" if kind == "max" else ">=", bound))
+for name, _, tile, _ in rows:
+    check(tile["seam"] <= SEAM_MAX, "%s: tileable seam %.3f <= %.2f" % (name, tile["seam"], SEAM_MAX))
+check(tile_coherence <= TILE_COHERENCE_SLACK * medians["coherence"],
+      "tileable median coherence %.3f within %d%% of plain %.3f"
+      % (tile_coherence, round((TILE_COHERENCE_SLACK - 1) * 100), medians["coherence"]))
+
+tsops.finish()

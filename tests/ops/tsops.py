@@ -1,0 +1,226 @@
+# Helpers for the texsynth GEGL operation tests.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+#
+# Run with the system Python (/usr/bin/python3): it has PyGObject and the
+# Gegl typelib, which images are read and written with.
+
+import atexit
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+
+OP = "texsynth:synthesize"
+PREFIX = OP + ": "
+
+_failures = []
+
+
+def note(message):
+    print(message, flush=True)
+
+
+def check(condition, message):
+    """Record a failed check without stopping, so one run shows them all."""
+    if condition:
+        note("ok    " + message)
+    else:
+        note("FAIL  " + message)
+        _failures.append(message)
+    return condition
+
+
+def finish():
+    if _failures:
+        note("\n%d check(s) failed:" % len(_failures))
+        for message in _failures:
+            note("  - " + message)
+        sys.exit(1)
+    note("\nall checks passed")
+    sys.exit(0)
+
+
+def die(message):
+    note("ERROR: " + message)
+    sys.exit(1)
+
+
+def exemplars_dir():
+    return os.environ.get("TEXSYNTH_EXEMPLARS") or os.path.join(
+        os.environ.get("TEXSYNTH_SOURCE_ROOT", "."), "examples")
+
+
+def exemplar(name):
+    path = os.path.join(exemplars_dir(), name)
+    if not os.path.isfile(path):
+        die("exemplar %s not found (TEXSYNTH_EXEMPLARS=%s)" % (name, exemplars_dir()))
+    return path
+
+
+def workdir():
+    """A scratch folder, removed at exit unless TEXSYNTH_KEEP_RESULTS is set."""
+    path = tempfile.mkdtemp(prefix="texsynth-ops-")
+    if not os.environ.get("TEXSYNTH_KEEP_RESULTS"):
+        atexit.register(shutil.rmtree, path, True)
+    else:
+        note("results kept in " + path)
+    return path
+
+
+# --- the gegl command-line tool ---------------------------------------------
+
+def gegl_binary():
+    path = os.environ.get("TEXSYNTH_GEGL") or shutil.which("gegl")
+    if not path:
+        die("the gegl command-line tool is not installed (Debian package 'gegl')")
+    return path
+
+
+def run_gegl(args, env=None, timeout=600):
+    """Run gegl; return (returncode, stdout, stderr). A crash is a failure."""
+    full_env = dict(os.environ)
+    full_env.update(env or {})
+    try:
+        proc = subprocess.run([gegl_binary()] + list(args), env=full_env,
+                              stdin=subprocess.DEVNULL, capture_output=True,
+                              text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        die("gegl %s did not finish within %d s" % (" ".join(args), timeout))
+    if proc.returncode < 0:
+        die("gegl %s was killed by signal %d\n%s"
+            % (" ".join(args), -proc.returncode, proc.stderr))
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+def require_op():
+    """An unknown op is not an error for gegl: it prints a message and passes
+    the image through, so every test must first make sure the op loads."""
+    code, out, err = run_gegl(["--exists", OP])
+    if code != 0:
+        die("gegl cannot find %s (GEGL_PATH=%s)\n%s%s"
+            % (OP, os.environ.get("GEGL_PATH", "<unset>"), out, err))
+
+
+def synthesize_cli(src, dst, env=None, timeout=600, extra_ops=(), **props):
+    """gegl -i src -o dst -- texsynth:synthesize key=value ... [extra ops]"""
+    args = ["-i", src, "-o", dst, "--", OP]
+    args += ["%s=%s" % (k.replace("_", "-"), _prop_text(v)) for k, v in props.items()]
+    args += list(extra_ops)
+    return run_gegl(args, env=env, timeout=timeout)
+
+
+def _prop_text(value):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return str(value)
+
+
+def op_warnings(stderr):
+    """The op's own warning lines (they carry the op name as a prefix)."""
+    return [line for line in stderr.splitlines() if PREFIX in line]
+
+
+# --- images through GObject introspection ------------------------------------
+
+_gegl = None
+
+
+def gegl():
+    """The Gegl module, initialised once."""
+    global _gegl
+    if _gegl is None:
+        try:
+            import gi
+            gi.require_version("Gegl", "0.4")
+            from gi.repository import Gegl
+        except (ImportError, ValueError) as error:
+            die("PyGObject with the Gegl 0.4 typelib is needed (Debian packages "
+                "python3-gi and gir1.2-gegl-0.4; run with /usr/bin/python3): %s" % error)
+        Gegl.init(None)
+        _gegl = Gegl
+    return _gegl
+
+
+def render(node, fmt="R'G'B'A float"):
+    """Render a node's whole bounding box: (width, height, floats)."""
+    Gegl = gegl()
+    box = node.get_bounding_box()
+    buf = Gegl.Buffer.new(fmt, box.x, box.y, box.width, box.height)
+    graph = node.get_parent() or node
+    sink = graph.create_child("gegl:write-buffer")
+    sink.set_property("buffer", buf)
+    node.connect_to("output", sink, "input")
+    sink.process()
+    data = bytes(buf.get(box, 1.0, fmt, Gegl.AbyssPolicy.NONE))
+    return box.width, box.height, struct.unpack("%df" % (len(data) // 4), data)
+
+
+def load(path, fmt="R'G'B'A float"):
+    """Read an image file: (width, height, floats in `fmt`)."""
+    Gegl = gegl()
+    graph = Gegl.Node()
+    node = graph.create_child("gegl:load")
+    node.set_property("path", path)
+    return render(node, fmt)
+
+
+def save_buffer(buf, path, bitdepth=8):
+    Gegl = gegl()
+    graph = Gegl.Node()
+    source = graph.create_child("gegl:buffer-source")
+    source.set_property("buffer", buf)
+    save = graph.create_child("gegl:png-save")
+    save.set_property("path", path)
+    save.set_property("bitdepth", bitdepth)
+    source.connect_to("output", save, "input")
+    save.process()
+
+
+def convert(src, dst, fmt, bitdepth=8, alpha_fn=None):
+    """Write `src` to PNG `dst` in babl format `fmt`; alpha_fn(x, y, w, h)
+    gives an alpha to impose (for formats with alpha)."""
+    Gegl = gegl()
+    w, h, px = load(src, "R'G'B'A float")
+    if alpha_fn:
+        px = list(px)
+        for y in range(h):
+            for x in range(w):
+                px[(y * w + x) * 4 + 3] = alpha_fn(x, y, w, h)
+    rgba = Gegl.Buffer.new("R'G'B'A float", 0, 0, w, h)
+    rgba.set(Gegl.Rectangle.new(0, 0, w, h), "R'G'B'A float",
+             struct.pack("%df" % len(px), *px))
+    out = Gegl.Buffer.new(fmt, 0, 0, w, h)
+    rgba.copy(Gegl.Rectangle.new(0, 0, w, h), Gegl.AbyssPolicy.NONE,
+              out, Gegl.Rectangle.new(0, 0, w, h))
+    save_buffer(out, dst, bitdepth)
+
+
+# --- pixel statistics ---------------------------------------------------------
+
+def max_abs_diff(a, b):
+    return max(abs(x - y) for x, y in zip(a, b)) if len(a) == len(b) else float("inf")
+
+
+def alphas(px):
+    return px[3::4]
+
+
+def wrap_seam_excess(w, h, px):
+    """How the wrap-around edges compare with the image's own pixel
+    boundaries: for columns and for rows, the mean colour step across the
+    wrap-around edge over the 90th percentile of the mean steps across each
+    inner boundary. At most about 1 when seamless; a structured texture has
+    strong inner boundaries (mortar, cell edges) too, hence the percentile."""
+    def step(x0, y0, x1, y1):
+        i, j = (y0 * w + x0) * 4, (y1 * w + x1) * 4
+        return sum(abs(px[i + c] - px[j + c]) for c in range(3))
+
+    def excess(n, m, pair):
+        means = [sum(step(*pair(k, (k + 1) % n, t)) for t in range(m)) / m for k in range(n)]
+        inner = sorted(means[:-1])
+        return means[-1] / max(inner[int(0.9 * (len(inner) - 1))], 1e-6)
+
+    return (excess(w, h, lambda a, b, y: (a, y, b, y)),
+            excess(h, w, lambda a, b, x: (x, a, x, b)))
