@@ -145,6 +145,8 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
           add_vote (&v, state->exemplar, state->preserve_source[p], keep);
         if (v.best_source < 0)
           continue;
+        if (state->disagreement)
+          state->disagreement[p] = v.best_distance;
         if (v.best_source != state->source[p])
           changed++;
         state->source[p] = v.best_source;

@@ -21,6 +21,8 @@ typedef struct
   const float          *preserve;   /* data-term weight per output pixel, or NULL */
   const int32_t        *preserve_source; /* exemplar index to keep, or NULL  */
   const float          *penalty;    /* occurrence penalty per exemplar centre, or NULL */
+  float                *disagreement; /* if not NULL, the E-step stores each pixel's
+                                         squared distance from its vote mean */
 } TsLevelState;
 
 /* Neighbourhood centres of one iteration along one axis, plus for every

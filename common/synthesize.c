@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "level.h"
 #include "occurrence.h"
+#include "seam-placement.h"
 #include "rng.h"
 
 #include <math.h>
@@ -13,6 +14,9 @@
 #define TS_CONVERGED_FRACTION 0.002
 /* Occurrence penalty per unit of over-use, in exemplar variances. */
 #define TS_OCCURRENCE_STRENGTH 0.1f
+/* Width of the band around a tile edge whose coherence matters: the
+ * 7x7 windows that straddle it. */
+#define TS_SEAM_BAND 7
 
 typedef struct
 {
@@ -164,8 +168,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   TsHistogram *histogram = NULL;
   TsOccurrence occurrence;
   TsStatus status;
-  const char *env = getenv ("TS_OCC");
-  float occ_strength = env ? (float) atof (env) : TS_OCCURRENCE_STRENGTH;
+  float occ_strength = TS_OCCURRENCE_STRENGTH;
 
   status = ts_occurrence_init (&occurrence, state->exemplar, occ_strength);
   if (status != TS_OK)
@@ -273,6 +276,7 @@ typedef struct
   size_t          coarser_width, coarser_ex_width;
   int32_t        *initial_source;
   float          *initial_preserve;
+  float          *disagreement;
 } Work;
 
 static void
@@ -293,10 +297,27 @@ work_free (Work *w)
   work_free_level (w);
   free (w->state.source);
   free (w->coarser_source);
+  free (w->disagreement);
   ts_candidate_set_free (&w->candidates);
   ts_candidate_set_free (&w->coarser_candidates);
   ts_pyramid_free (&w->pyramid);
   ts_image_free (&w->working);
+}
+
+/* Rolls a finished wrap-around result so its tile edges run where the
+ * synthesis is most coherent. */
+static TsStatus
+place_tile_edges (TsLevelState *state)
+{
+  size_t sx, sy;
+  TsStatus status = ts_seam_best_shift (state->disagreement, state->width, state->height,
+                                        state->wrap_x, state->wrap_y, TS_SEAM_BAND, &sx, &sy);
+  if (status == TS_OK)
+    status = ts_seam_roll (state->output.pixels, state->width, state->height,
+                           TS_CHANNELS * sizeof (float), sx, sy);
+  if (status == TS_OK)
+    status = ts_seam_roll (state->source, state->width, state->height, sizeof (int32_t), sx, sy);
+  return status;
 }
 
 static TsStatus
@@ -346,11 +367,20 @@ synthesize_level (Run *run, Work *w, size_t level)
       state->preserve_source = w->initial_source;
       state->preserve = w->initial_preserve;
     }
-  start_sources (state, params, level, getenv ("TS_BLOCK") ? (size_t) atoi (getenv ("TS_BLOCK")) : plan.pass[0].patch, w->coarser_source, w->coarser_width,
+  start_sources (state, params, level, plan.pass[0].patch, w->coarser_source, w->coarser_width,
                  w->coarser_ex_width);
   copy_sources_to_output (state);
 
+  if (level == 0 && (params->wrap_x || params->wrap_y) && !params->initial_source)
+    {
+      w->disagreement = calloc (state->width * state->height, sizeof (float));
+      if (!w->disagreement)
+        return TS_ERROR_OUT_OF_MEMORY;
+      state->disagreement = w->disagreement;
+    }
   status = optimize_level (run, state, &plan, level);
+  if (status == TS_OK && state->disagreement)
+    status = place_tile_edges (state);
   if (status != TS_OK)
     return status;
 

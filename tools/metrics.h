@@ -36,7 +36,8 @@
 #define TS_MEASURE_RADIUS 3       /* 7x7 windows                      */
 #define TS_MEASURE_STEP 2         /* query windows at every 2nd pixel */
 #define TS_MEASURE_MIN_SIDE 7     /* smallest image side accepted     */
-#define TS_MEASURE_SEAM_FLOOR 0.5 /* Lab units added to both seam means */
+#define TS_MEASURE_SEAM_FLOOR 0.01 /* Lab units added to both seam means, so two
+                                     exact copies (0 / 0) read as seamless */
 #define TS_COPY_RADIUS 2          /* 5x5 windows for copy detection   */
 #define TS_COPY_MAX_RMS 1.0       /* "verbatim": RMS Lab difference below this */
 

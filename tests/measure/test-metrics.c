@@ -242,7 +242,7 @@ brute_measures (const TsImage *ex, const TsImage *res, bool wx, bool wy, double 
         sum_o += d, n_o++;
     }
   *coherence = (sum_s + sum_o) / (double) (n_s + n_o);
-  *seam = (wx || wy) && n_s && n_o ? (sum_s / n_s + 0.5) / (sum_o / n_o + 0.5) : NAN;
+  *seam = (wx || wy) && n_s && n_o ? (sum_s / n_s + TS_MEASURE_SEAM_FLOOR) / (sum_o / n_o + TS_MEASURE_SEAM_FLOOR) : NAN;
   for (size_t i = 0; i < ts_grid_count (&eq); i++)
     {
       size_t x, y;

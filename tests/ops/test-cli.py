@@ -92,9 +92,18 @@ for label, src, props, extra, word in cases:
     if warnings:
         note("      " + warnings[0].strip())
     check(max(tsops.alphas(bad)) == 0.0, "%s exemplar: the result is fully transparent" % label)
-code, _, err = tsops.run_gegl(["-o", out("none.png"), "--", tsops.OP, "width=10", "height=10"])
-warnings = tsops.op_warnings(err)
-check(code == 0 and warnings and "no pixels" in warnings[0],
-      "no input at all: a warning, no crash %s" % warnings)
+generated = [
+    ("no input at all", [], "no pixels"),
+    # An infinite plane: GEGL must not be asked to render all of it.
+    ("an unbounded input", ["gegl:color", "value=red"], "unbounded"),
+    ("a 16385x20 input", ["gegl:color", "value=red", "gegl:crop", "width=16385", "height=20"],
+     "16385x20"),
+]
+for label, source_ops, word in generated:
+    code, _, err = tsops.run_gegl(["-o", out("gen.png"), "--"] + source_ops +
+                                  [tsops.OP, "width=10", "height=10"], timeout=120)
+    warnings = tsops.op_warnings(err)
+    check(code == 0 and warnings and word in warnings[0],
+          "%s: a warning mentioning '%s', no crash or hang %s" % (label, word, warnings))
 
 tsops.finish()
