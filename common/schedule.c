@@ -7,6 +7,9 @@
 #endif
 
 #define TS_MAX_K_LEVEL 30
+#ifndef TS_FINEST_ITERATIONS
+#define TS_FINEST_ITERATIONS 2
+#endif
 
 int
 ts_schedule_threads (void)
@@ -70,10 +73,11 @@ ts_schedule_level (const TsParams *params, size_t level, size_t levels,
 {
   size_t large = params->patch_size ? (size_t) params->patch_size : (level == 0 ? 11 : 9);
   size_t small = params->fine_patch_size ? (size_t) params->fine_patch_size : (level == 0 ? 7 : 5);
+  /* The coarsest level sets the layout from a random start and needs the
+   * most iterations; finer levels start close to converged. */
   size_t iterations = params->max_iterations ? (size_t) params->max_iterations
-                      : (level + 1 == levels ? 6 : 3);
+                      : (level + 1 == levels ? 6 : (level == 0 ? TS_FINEST_ITERATIONS : 3));
 
-  (void) levels;
   if (small > large)
     small = large;
   large = fit_patch (large, ex_w, ex_h);
