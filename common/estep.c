@@ -33,6 +33,17 @@ centres_covering (const TsAxisGrid *g, ptrdiff_t t, size_t *lo, size_t *hi)
   return true;
 }
 
+/* Votes are kept in a local list so the second pass (nearest to the mean)
+ * need not gather them again; only degenerate cases (tiny mirrored outputs
+ * with huge neighbourhoods) overflow it and fall back to gathering twice. */
+#define TS_LOCAL_VOTES 256
+
+typedef struct
+{
+  int32_t source;
+  float   weight;
+} Vote;
+
 typedef struct
 {
   float   sum[TS_CHANNELS];
@@ -41,22 +52,24 @@ typedef struct
   float   mean[TS_CHANNELS];
   int32_t best_source;
   bool    choosing;   /* second pass: pick the vote closest to the mean */
+  bool    overflow;   /* more votes than the list holds                 */
+  size_t  count;
+  Vote    list[TS_LOCAL_VOTES];
 } Votes;
 
 static void
-add_vote (Votes *v, const TsImage *ex, int32_t source, float weight)
+votes_reset (Votes *v)
 {
-  const float *value = ex->pixels + (size_t) source * TS_CHANNELS;
+  memset (v->sum, 0, sizeof v->sum);
+  v->weight = 0.0f;
+  v->choosing = false;
+  v->overflow = false;
+  v->count = 0;
+}
 
-  if (value[3] <= 0.0f || !(weight > 0.0f))
-    return;
-  if (!v->choosing)
-    {
-      for (int c = 0; c < TS_CHANNELS; c++)
-        v->sum[c] += weight * value[c];
-      v->weight += weight;
-      return;
-    }
+static void
+choose (Votes *v, const float *value, int32_t source)
+{
   float d = 0.0f;
   for (int c = 0; c < TS_CHANNELS; c++)
     {
@@ -68,6 +81,30 @@ add_vote (Votes *v, const TsImage *ex, int32_t source, float weight)
       v->best_distance = d;
       v->best_source = source;
     }
+}
+
+/* `any_alpha`: count a transparent value too (the data term, so that
+ * preserved transparent pixels stay transparent); matched neighbourhoods
+ * never vote for transparency. */
+static void
+add_vote (Votes *v, const TsImage *ex, int32_t source, float weight, bool any_alpha)
+{
+  const float *value = ex->pixels + (size_t) source * TS_CHANNELS;
+
+  if ((value[3] <= 0.0f && !any_alpha) || !(weight > 0.0f))
+    return;
+  if (v->choosing)
+    {
+      choose (v, value, source);
+      return;
+    }
+  for (int c = 0; c < TS_CHANNELS; c++)
+    v->sum[c] += weight * value[c];
+  v->weight += weight;
+  if (v->count < TS_LOCAL_VOTES)
+    v->list[v->count++] = (Vote) { source, weight };
+  else
+    v->overflow = true;
 }
 
 static void
@@ -101,8 +138,8 @@ collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxis
                   int32_t source = m->centre + (int32_t) (dy * (ptrdiff_t) ew + dx);
                   float weight = m->weight;
                   if (histogram)
-                    weight *= ts_histogram_factor (histogram, ex->pixels + (size_t) source * TS_CHANNELS);
-                  add_vote (v, ex, source, weight);
+                    weight *= histogram->factor[source];
+                  add_vote (v, ex, source, weight, false);
                 }
             }
         }
@@ -123,7 +160,10 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         Votes v;
         float keep = 0.0f;
 
-        memset (&v, 0, sizeof v);
+        /* Weight 1 keeps the pixel at its initial source (see start_sources). */
+        if (state->preserve && state->preserve[p] >= 1.0f)
+          continue;
+        votes_reset (&v);
         collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);
         if (state->preserve && state->preserve[p] > 0.0f)
           {
@@ -131,7 +171,7 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
              * total weight that grows without bound as preserve -> 1. */
             float w = state->preserve[p];
             keep = (v.weight > 0.0f ? v.weight : 1.0f) * w / (1.0f - w + 1e-4f);
-            add_vote (&v, state->exemplar, state->preserve_source[p], keep);
+            add_vote (&v, state->exemplar, state->preserve_source[p], keep, true);
           }
         if (!(v.weight > 0.0f))
           continue;
@@ -140,9 +180,16 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         v.choosing = true;
         v.best_distance = INFINITY;
         v.best_source = -1;
-        collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);
-        if (keep > 0.0f)
-          add_vote (&v, state->exemplar, state->preserve_source[p], keep);
+        if (!v.overflow)
+          for (size_t i = 0; i < v.count; i++)
+            choose (&v, state->exemplar->pixels + (size_t) v.list[i].source * TS_CHANNELS,
+                    v.list[i].source);
+        else
+          {
+            collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);
+            if (keep > 0.0f)
+              add_vote (&v, state->exemplar, state->preserve_source[p], keep, true);
+          }
         if (v.best_source < 0)
           continue;
         if (state->disagreement)

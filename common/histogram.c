@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "histogram.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 /* Densities of the opaque pixels of `image`, normalised so a uniform
@@ -27,7 +28,7 @@ count (const TsHistogram *h, const TsImage *image, float out[3][TS_HISTOGRAM_BIN
       out[c][b] *= (float) TS_HISTOGRAM_BINS / (float) used;
 }
 
-void
+TsStatus
 ts_histogram_init (TsHistogram *h, const TsImage *exemplar)
 {
   size_t n = ts_image_pixel_count (exemplar);
@@ -52,6 +53,20 @@ ts_histogram_init (TsHistogram *h, const TsImage *exemplar)
     }
   count (h, exemplar, h->exemplar);
   memset (h->excess, 0, sizeof h->excess);
+  h->source = exemplar;
+  h->factor = malloc ((n ? n : 1) * sizeof (float));
+  if (!h->factor)
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (size_t i = 0; i < n; i++)
+    h->factor[i] = 1.0f;
+  return TS_OK;
+}
+
+void
+ts_histogram_free (TsHistogram *h)
+{
+  free (h->factor);
+  h->factor = NULL;
 }
 
 void
@@ -66,4 +81,8 @@ ts_histogram_update (TsHistogram *h, const TsImage *output)
         float d = density[c][b] - h->exemplar[c][b];
         h->excess[c][b] = d > 0.0f ? d : 0.0f;
       }
+  /* Per exemplar pixel once, instead of per vote. */
+  size_t n = ts_image_pixel_count (h->source);
+  for (size_t i = 0; i < n; i++)
+    h->factor[i] = ts_histogram_factor (h, h->source->pixels + i * TS_CHANNELS);
 }

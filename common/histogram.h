@@ -14,12 +14,17 @@ typedef struct
   float lo[3], scale[3];                      /* bin = (v - lo) * scale       */
   float exemplar[3][TS_HISTOGRAM_BINS];       /* densities (mean 1 per bin)   */
   float excess[3][TS_HISTOGRAM_BINS];         /* max(0, output - exemplar)    */
+  const TsImage *source;                      /* the exemplar                 */
+  float *factor;                              /* vote weight factor of each
+                                                 exemplar pixel, in (0, 1]    */
 } TsHistogram;
 
-/* Bins from the exemplar's opaque pixels. */
-void  ts_histogram_init (TsHistogram *histogram, const TsImage *exemplar);
-/* Recomputes the output side from the opaque pixels of `output`. */
-void  ts_histogram_update (TsHistogram *histogram, const TsImage *output);
+/* Bins from the exemplar's opaque pixels; keeps a pointer to it. */
+TsStatus ts_histogram_init (TsHistogram *histogram, const TsImage *exemplar);
+void     ts_histogram_free (TsHistogram *histogram);
+/* Recomputes the output side from the opaque pixels of `output`, and the
+ * factor of every exemplar pixel. */
+void     ts_histogram_update (TsHistogram *histogram, const TsImage *output);
 
 static inline size_t
 ts_histogram_bin (const TsHistogram *h, int channel, float v)

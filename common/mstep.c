@@ -36,13 +36,17 @@ ssd_bounded (const Search *s, size_t qx, size_t qy, float bound)
   for (size_t row = 0; row < s->patch; row++)
     {
       const float *b = ts_image_pixel (s->exemplar, qx - s->radius, qy - s->radius + row);
-      float row_sum = 0.0f;
-      for (size_t i = 0; i < row_floats; i++)
-        {
-          float d = a[i] - b[i];
-          row_sum += d * d;
-        }
-      sum += row_sum;
+      /* One accumulator per channel: independent lanes the compiler can
+       * vectorise without reordering any float sum (results stay exact
+       * and identical on every machine). */
+      float lane[TS_CHANNELS] = { 0.0f, 0.0f, 0.0f, 0.0f };
+      for (size_t i = 0; i < row_floats; i += TS_CHANNELS)
+        for (size_t c = 0; c < TS_CHANNELS; c++)
+          {
+            float d = a[i + c] - b[i + c];
+            lane[c] += d * d;
+          }
+      sum += (lane[0] + lane[1]) + (lane[2] + lane[3]);
       if (sum >= bound)
         return sum;
       a += row_floats;
@@ -113,6 +117,21 @@ gather (const TsLevelState *state, ptrdiff_t cx, ptrdiff_t cy, size_t radius, fl
           out += TS_CHANNELS;
         }
     }
+}
+
+/* True if every pixel of the neighbourhood is fully preserved: its match
+ * could only vote for pixels that never change. */
+static bool
+frozen (const TsLevelState *state, ptrdiff_t cx, ptrdiff_t cy, size_t radius)
+{
+  for (ptrdiff_t dy = -(ptrdiff_t) radius; dy <= (ptrdiff_t) radius; dy++)
+    {
+      size_t y = ts_border_index (cy + dy, state->height, state->wrap_y);
+      for (ptrdiff_t dx = -(ptrdiff_t) radius; dx <= (ptrdiff_t) radius; dx++)
+        if (state->preserve[y * state->width + ts_border_index (cx + dx, state->width, state->wrap_x)] < 1.0f)
+          return false;
+    }
+  return true;
 }
 
 static void
@@ -186,6 +205,13 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         size_t jx = (size_t) i % gx->centres, jy = (size_t) i / gx->centres;
         ptrdiff_t cx = ts_axis_grid_centre (gx, jx), cy = ts_axis_grid_centre (gy, jy);
 
+        if (state->preserve && frozen (state, cx, cy, radius))
+          {
+            matches[i].centre = -1;
+            matches[i].distance = 0.0f;
+            matches[i].weight = 0.0f;
+            continue;
+          }
         gather (state, cx, cy, radius, neighbourhood);
         if (++s.visit == 0)
           {

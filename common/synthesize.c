@@ -147,6 +147,11 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
       }
   if (state->preserve_source && !coarser)
     memcpy (state->source, state->preserve_source, state->width * state->height * sizeof (int32_t));
+  /* Fully preserved pixels start (and stay: the E-step skips them) at
+   * their initial source, even where a coarser parent moved. */
+  for (size_t p = 0; state->preserve && p < state->width * state->height; p++)
+    if (state->preserve[p] >= 1.0f)
+      state->source[p] = state->preserve_source[p];
 }
 
 static void
@@ -169,6 +174,17 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   TsOccurrence occurrence;
   TsStatus status;
   float occ_strength = TS_OCCURRENCE_STRENGTH;
+  size_t free_pixels = pixels;
+
+  /* Convergence is judged on the pixels that may change: with most of
+   * the output preserved, a fraction of all pixels would stop the
+   * optimization of the rest early. */
+  if (state->preserve)
+    {
+      free_pixels = 0;
+      for (size_t p = 0; p < pixels; p++)
+        free_pixels += state->preserve[p] < 1.0f;
+    }
 
   status = ts_occurrence_init (&occurrence, state->exemplar, occ_strength);
   if (status != TS_OK)
@@ -178,12 +194,14 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   if (params->histogram_matching)
     {
       histogram = malloc (sizeof *histogram);
-      if (!histogram)
+      if (!histogram || ts_histogram_init (histogram, state->exemplar) != TS_OK)
         {
+          if (histogram)
+            ts_histogram_free (histogram);
+          free (histogram);
           ts_occurrence_free (&occurrence);
           return TS_ERROR_OUT_OF_MEMORY;
         }
-      ts_histogram_init (histogram, state->exemplar);
     }
 
   for (size_t pi = 0; pi < plan->passes && status == TS_OK; pi++)
@@ -232,7 +250,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
               status = TS_ERROR_CANCELLED;
               break;
             }
-          if ((double) changed < TS_CONVERGED_FRACTION * (double) pixels)
+          if ((double) changed < TS_CONVERGED_FRACTION * (double) free_pixels)
             {
               it++;
               break;
@@ -241,6 +259,8 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
       /* Credit the iterations convergence made unnecessary. */
       run->done += (double) (pass->max_iterations - it) * (double) pixels;
     }
+  if (histogram)
+    ts_histogram_free (histogram);
   free (histogram);
   ts_occurrence_free (&occurrence);
   state->penalty = NULL;
