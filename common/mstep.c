@@ -4,6 +4,7 @@
 #include "level.h"
 #include "indexing.h"
 #include "rng.h"
+#include "ssd.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -36,17 +37,9 @@ ssd_bounded (const Search *s, size_t qx, size_t qy, float bound)
   for (size_t row = 0; row < s->patch; row++)
     {
       const float *b = ts_image_pixel (s->exemplar, qx - s->radius, qy - s->radius + row);
-      /* One accumulator per channel: independent lanes the compiler can
-       * vectorise without reordering any float sum (results stay exact
-       * and identical on every machine). */
       float lane[TS_CHANNELS] = { 0.0f, 0.0f, 0.0f, 0.0f };
-      for (size_t i = 0; i < row_floats; i += TS_CHANNELS)
-        for (size_t c = 0; c < TS_CHANNELS; c++)
-          {
-            float d = a[i + c] - b[i + c];
-            lane[c] += d * d;
-          }
-      sum += (lane[0] + lane[1]) + (lane[2] + lane[3]);
+      ts_lanes_add (lane, a, b, row_floats);
+      sum += TS_LANES_TOTAL (lane);
       if (sum >= bound)
         return sum;
       a += row_floats;
