@@ -120,6 +120,58 @@ TsStatus ts_synthesize (const TsParams *params,
                         void           *user_data,
                         TsError        *error);
 
+/* --- Making an existing image tileable (common/tileable.c) -------------- */
+
+typedef enum
+{
+  TS_TILEABLE_BOTH = 0,    /* left/right and top/bottom edges meet        */
+  TS_TILEABLE_HORIZONTAL,  /* left and right edges only (wraps along x)   */
+  TS_TILEABLE_VERTICAL     /* top and bottom edges only (wraps along y)   */
+} TsTileableDirection;
+
+/* Smallest side of the input along a direction that is made to wrap. */
+#define TS_TILEABLE_MIN_SIDE 8
+/* Range of TsTileableParams.seam_width. */
+#define TS_TILEABLE_MIN_SEAM_WIDTH 0.02
+#define TS_TILEABLE_MAX_SEAM_WIDTH 0.25
+
+typedef struct
+{
+  TsTileableDirection direction;
+  double   seam_width;         /* band on each side of a wrap edge that is
+                                  replaced, as a fraction of the image side,
+                                  TS_TILEABLE_MIN_SEAM_WIDTH .. _MAX_; the
+                                  rest of the image is kept as it is     */
+  int      quality;            /* as TsParams                            */
+  uint32_t seed;
+  int      patch_size;
+  int      fine_patch_size;
+  int      max_iterations;
+  bool     histogram_matching;
+  size_t   memory_limit;
+} TsTileableParams;
+
+/* Fill `params` with the defaults (both directions, default seam width,
+ * the synthesis defaults of ts_params_init). */
+void ts_tileable_params_init (TsTileableParams *params);
+
+/* Check `params` against `input`; on failure fills `error` (may be NULL)
+ * and returns its status. ts_make_tileable calls this first. */
+TsStatus ts_tileable_params_validate (const TsTileableParams *params,
+                                      const TsImage          *input,
+                                      TsError                *error);
+
+/* Re-synthesise the parts of `input` near its edges so that the result
+ * tiles seamlessly in the chosen direction(s) while everything farther
+ * from the edges stays exactly as it was. `output` must be allocated
+ * with the input's size; it is left untouched on failure. */
+TsStatus ts_make_tileable (const TsTileableParams *params,
+                           const TsImage          *input,
+                           TsImage                *output,
+                           TsProgressFunc          progress,
+                           void                   *user_data,
+                           TsError                *error);
+
 #ifdef __cplusplus
 }
 #endif

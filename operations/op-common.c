@@ -155,18 +155,62 @@ ts_op_progress_func (double fraction, const char *stage, void *user_data)
 void
 ts_op_write_output (GeglBuffer          *output,
                     const GeglRectangle *roi,
-                    const TsImage       *image)
+                    const TsImage       *image,
+                    gint                 x,
+                    gint                 y)
 {
-  GeglRectangle whole = { 0, 0, (gint) image->width, (gint) image->height };
+  GeglRectangle whole = { x, y, (gint) image->width, (gint) image->height };
   GeglRectangle part;
   gsize stride = image->width * TS_CHANNELS * sizeof (float);
 
   if (!gegl_rectangle_intersect (&part, &whole, roi))
     return;
   gegl_buffer_set (output, &part, 0, babl_format (TS_OP_FORMAT),
-                   (const guchar *) image->pixels + part.y * stride
-                     + (gsize) part.x * TS_CHANNELS * sizeof (float),
+                   (const guchar *) image->pixels + (gsize) (part.y - y) * stride
+                     + (gsize) (part.x - x) * TS_CHANNELS * sizeof (float),
                    (gint) stride);
+}
+
+void
+ts_op_prepare (GeglOperation *operation)
+{
+  const Babl *format = babl_format (TS_OP_FORMAT);
+
+  gegl_operation_set_format (operation, "input", format);
+  gegl_operation_set_format (operation, "output", format);
+}
+
+GeglRectangle
+ts_op_get_required_for_output (GeglOperation       *operation,
+                               const gchar         *input_pad G_GNUC_UNUSED,
+                               const GeglRectangle *roi G_GNUC_UNUSED)
+{
+  return ts_op_required_input (operation);
+}
+
+GeglRectangle
+ts_op_get_cached_region (GeglOperation       *operation,
+                         const GeglRectangle *roi G_GNUC_UNUSED)
+{
+  return GEGL_OPERATION_GET_CLASS (operation)->get_bounding_box (operation);
+}
+
+GeglRectangle
+ts_op_get_invalidated_by_change (GeglOperation       *operation,
+                                 const gchar         *input_pad G_GNUC_UNUSED,
+                                 const GeglRectangle *input_region G_GNUC_UNUSED)
+{
+  return GEGL_OPERATION_GET_CLASS (operation)->get_bounding_box (operation);
+}
+
+int
+ts_op_odd_size (int size)
+{
+  if (size <= 0)
+    return 0;
+  if (size < TS_MIN_PATCH_SIZE)
+    return TS_MIN_PATCH_SIZE;
+  return size | 1;
 }
 
 void

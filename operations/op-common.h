@@ -53,11 +53,28 @@ void ts_op_progress_init  (TsOpProgress *progress, GeglOperation *operation);
 void ts_op_progress_clear (TsOpProgress *progress);
 bool ts_op_progress_func  (double fraction, const char *stage, void *user_data);
 
-/* Copy the part of `image` (placed at the origin) that lies in `roi` into
- * `output`. */
+/* Copy the part of `image`, placed with its top-left pixel at (x, y),
+ * that lies in `roi` into `output`. */
 void ts_op_write_output (GeglBuffer          *output,
                          const GeglRectangle *roi,
-                         const TsImage       *image);
+                         const TsImage       *image,
+                         gint                 x,
+                         gint                 y);
+
+/* Class methods both whole-image ops share: input and output in the
+ * engine's format; all of the input for any output; the whole output
+ * cached and invalidated at once, since synthesis is global. */
+void          ts_op_prepare (GeglOperation *operation);
+GeglRectangle ts_op_get_required_for_output (GeglOperation *operation, const gchar *input_pad,
+                                             const GeglRectangle *roi);
+GeglRectangle ts_op_get_cached_region (GeglOperation *operation, const GeglRectangle *roi);
+GeglRectangle ts_op_get_invalidated_by_change (GeglOperation *operation, const gchar *input_pad,
+                                               const GeglRectangle *input_region);
+
+/* A patch-size property as the engine takes it: 0 stays automatic, other
+ * values become odd and at least TS_MIN_PATCH_SIZE (sliders give any
+ * integer). */
+int ts_op_odd_size (int size);
 
 /* The defined result of a failed synthesis: warn "<op name>: <message>"
  * and make `roi` of `output` fully transparent. */

@@ -81,15 +81,6 @@ property_boolean (histogram_matching, _("Histogram matching"),
 #include "gegl-op.h"
 #pragma GCC diagnostic pop
 
-static void
-prepare (GeglOperation *operation)
-{
-  const Babl *format = babl_format (TS_OP_FORMAT);
-
-  gegl_operation_set_format (operation, "input", format);
-  gegl_operation_set_format (operation, "output", format);
-}
-
 /* The output has the requested size at the origin, whatever the input's
  * size and position. */
 static GeglRectangle
@@ -101,42 +92,6 @@ get_bounding_box (GeglOperation *operation)
   return box;
 }
 
-/* Every output pixel may copy from anywhere in the exemplar. */
-static GeglRectangle
-get_required_for_output (GeglOperation       *operation,
-                         const gchar         *input_pad G_GNUC_UNUSED,
-                         const GeglRectangle *roi G_GNUC_UNUSED)
-{
-  return ts_op_required_input (operation);
-}
-
-/* Synthesis is global: computing any part means computing all of it. */
-static GeglRectangle
-get_cached_region (GeglOperation       *operation,
-                   const GeglRectangle *roi G_GNUC_UNUSED)
-{
-  return get_bounding_box (operation);
-}
-
-static GeglRectangle
-get_invalidated_by_change (GeglOperation       *operation,
-                           const gchar         *input_pad G_GNUC_UNUSED,
-                           const GeglRectangle *input_region G_GNUC_UNUSED)
-{
-  return get_bounding_box (operation);
-}
-
-/* The engine wants odd sizes; GUI sliders give any integer. */
-static int
-odd_size (int size)
-{
-  if (size <= 0)
-    return 0;
-  if (size < TS_MIN_PATCH_SIZE)
-    return TS_MIN_PATCH_SIZE;
-  return size | 1;
-}
-
 static void
 fill_params (GeglProperties *o, TsParams *params)
 {
@@ -146,8 +101,8 @@ fill_params (GeglProperties *o, TsParams *params)
   params->wrap_x = params->wrap_y = o->tileable;
   params->quality = o->quality;
   params->seed = o->seed;
-  params->patch_size = odd_size (o->patch_size);
-  params->fine_patch_size = odd_size (o->fine_patch_size);
+  params->patch_size = ts_op_odd_size (o->patch_size);
+  params->fine_patch_size = ts_op_odd_size (o->fine_patch_size);
   /* Only a combination the user chose explicitly can conflict. */
   if (params->patch_size && params->fine_patch_size > params->patch_size)
     params->fine_patch_size = params->patch_size;
@@ -190,7 +145,7 @@ process (GeglOperation       *operation,
   /* A failure still yields a defined (transparent) image, and TRUE, so
    * that a graph goes on rendering and the warning says what went wrong. */
   if (status == TS_OK)
-    ts_op_write_output (output, roi, &result);
+    ts_op_write_output (output, roi, &result, 0, 0);
   else
     ts_op_fail (operation, output, roi,
                 error.message[0] ? error.message : ts_status_string (status));
@@ -206,11 +161,11 @@ gegl_op_class_init (GeglOpClass *klass)
   GeglOperationClass       *operation_class = GEGL_OPERATION_CLASS (klass);
   GeglOperationFilterClass *filter_class = GEGL_OPERATION_FILTER_CLASS (klass);
 
-  operation_class->prepare                   = prepare;
+  operation_class->prepare                   = ts_op_prepare;
   operation_class->get_bounding_box          = get_bounding_box;
-  operation_class->get_required_for_output   = get_required_for_output;
-  operation_class->get_cached_region         = get_cached_region;
-  operation_class->get_invalidated_by_change = get_invalidated_by_change;
+  operation_class->get_required_for_output   = ts_op_get_required_for_output;
+  operation_class->get_cached_region         = ts_op_get_cached_region;
+  operation_class->get_invalidated_by_change = ts_op_get_invalidated_by_change;
   /* The engine has its own threads; GEGL must not split the work. */
   operation_class->threaded                  = FALSE;
   operation_class->want_in_place             = FALSE;

@@ -1,0 +1,216 @@
+/* texsynth:tileable: make an image tile seamlessly by re-synthesising the
+ * parts near its edges, keeping the rest of the picture as it is.
+ * SPDX-License-Identifier: LGPL-3.0-or-later
+ *
+ * A whole-image filter: the output has the input's extent; it reads all of
+ * the input, runs the engine once (ts_make_tileable) and caches the result.
+ */
+#include <glib/gi18n-lib.h>
+
+#include "op-common.h"
+
+#ifdef GEGL_PROPERTIES
+
+enum_start (texsynth_tileable_direction)
+  enum_value (TEXSYNTH_TILEABLE_BOTH,       "both",       N_("Both"))
+  enum_value (TEXSYNTH_TILEABLE_HORIZONTAL, "horizontal", N_("Horizontally"))
+  enum_value (TEXSYNTH_TILEABLE_VERTICAL,   "vertical",   N_("Vertically"))
+enum_end (TexsynthTileableDirection)
+
+property_enum (direction, _("Direction"),
+               TexsynthTileableDirection, texsynth_tileable_direction,
+               TEXSYNTH_TILEABLE_BOTH)
+  description (_("Which edges must continue each other: both pairs, left "
+                 "and right only (tiles horizontally) or top and bottom "
+                 "only (tiles vertically)"))
+
+property_double (seam_width, _("Seam width"), 0.125)
+  description (_("How much of the image may change: the width of the band "
+                 "along each edge that is re-synthesised, as a fraction of "
+                 "the image's width or height. Wider bands hide a seam "
+                 "better in large-scale textures; everything beyond the "
+                 "band and its blend stays as it is"))
+  value_range (TS_TILEABLE_MIN_SEAM_WIDTH, TS_TILEABLE_MAX_SEAM_WIDTH)
+
+property_int (quality, _("Quality"), ts_op_default_params ().quality)
+  description (_("Higher values compare more candidates per pixel: fewer "
+                 "visible transitions, but slower"))
+  value_range (TS_MIN_QUALITY, TS_MAX_QUALITY)
+
+property_seed (seed, _("Random seed"), rand)
+  description (_("The same seed with the same settings gives the same "
+                 "result; change it for another variation"))
+
+property_int (patch_size, _("Patch size"), ts_op_default_params ().patch_size)
+  description (_("Size in pixels of the neighbourhoods compared in the "
+                 "first iterations of each level; larger keeps larger "
+                 "structures together. 0 chooses automatically; even "
+                 "values are rounded up to odd"))
+  value_range (0, TS_MAX_PATCH_SIZE)
+  ui_meta     ("role", "advanced")
+
+property_int (fine_patch_size, _("Fine patch size"), ts_op_default_params ().fine_patch_size)
+  description (_("Size in pixels of the neighbourhoods of the last "
+                 "iterations, at most the patch size; smaller gives "
+                 "sharper detail. 0 chooses automatically; even values "
+                 "are rounded up to odd"))
+  value_range (0, TS_MAX_PATCH_SIZE)
+  ui_meta     ("role", "advanced")
+
+property_int (iterations, _("Iterations"), ts_op_default_params ().max_iterations)
+  description (_("Maximum number of refinement iterations per level "
+                 "(0 chooses automatically)"))
+  value_range (0, TS_MAX_ITERATIONS)
+  ui_range    (0, 20)
+  ui_meta     ("role", "advanced")
+
+property_boolean (histogram_matching, _("Histogram matching"),
+                  ts_op_default_params ().histogram_matching)
+  description (_("Keep the colour distribution of the re-synthesised parts "
+                 "close to the image's"))
+  ui_meta     ("role", "advanced")
+
+#else
+
+#define GEGL_OP_FILTER
+#define GEGL_OP_NAME     texsynth_tileable
+#define GEGL_OP_C_SOURCE texsynth-tileable.c
+
+/* gegl-op.h's generated boilerplate trips -Wextra; our own code must not. */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wcast-function-type"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#include "gegl-op.h"
+#pragma GCC diagnostic pop
+
+/* The output covers exactly the input. */
+static GeglRectangle
+get_bounding_box (GeglOperation *operation)
+{
+  const GeglRectangle *box = gegl_operation_source_get_bounding_box (operation, "input");
+  GeglRectangle empty = { 0, 0, 0, 0 };
+
+  return box ? *box : empty;
+}
+
+static void
+fill_params (GeglProperties *o, TsTileableParams *params)
+{
+  ts_tileable_params_init (params);
+  switch (o->direction)
+    {
+    case TEXSYNTH_TILEABLE_HORIZONTAL: params->direction = TS_TILEABLE_HORIZONTAL; break;
+    case TEXSYNTH_TILEABLE_VERTICAL:   params->direction = TS_TILEABLE_VERTICAL; break;
+    default:                           params->direction = TS_TILEABLE_BOTH; break;
+    }
+  params->seam_width = o->seam_width;
+  params->quality = o->quality;
+  params->seed = o->seed;
+  params->patch_size = ts_op_odd_size (o->patch_size);
+  params->fine_patch_size = ts_op_odd_size (o->fine_patch_size);
+  /* Only a combination the user chose explicitly can conflict. */
+  if (params->patch_size && params->fine_patch_size > params->patch_size)
+    params->fine_patch_size = params->patch_size;
+  params->max_iterations = o->iterations;
+  params->histogram_matching = o->histogram_matching;
+}
+
+static gboolean
+process (GeglOperation       *operation,
+         GeglBuffer          *input,
+         GeglBuffer          *output,
+         const GeglRectangle *roi,
+         gint                 level G_GNUC_UNUSED)
+{
+  GeglProperties *o = GEGL_PROPERTIES (operation);
+  GeglRectangle box = get_bounding_box (operation);
+  TsTileableParams params;
+  TsImage image, result = { 0, 0, NULL };
+  TsError error = { TS_OK, "" };
+  TsOpProgress progress;
+  TsStatus status;
+
+  fill_params (o, &params);
+  if (!ts_op_read_input (operation, input, &image, error.message, sizeof error.message))
+    {
+      ts_op_fail (operation, output, roi, error.message);
+      return TRUE;
+    }
+
+  status = ts_tileable_params_validate (&params, &image, &error);
+  if (status == TS_OK)
+    {
+      result.pixels = g_try_malloc (image.width * image.height * TS_CHANNELS * sizeof (float));
+      result.width = image.width;
+      result.height = image.height;
+      if (!result.pixels)
+        {
+          status = TS_ERROR_OUT_OF_MEMORY;
+          g_snprintf (error.message, sizeof error.message,
+                      "out of memory allocating the %zux%zu output", image.width, image.height);
+        }
+    }
+  if (status == TS_OK)
+    {
+      ts_op_progress_init (&progress, operation);
+      ts_op_progress_func (0.0, "starting", &progress);
+      status = ts_make_tileable (&params, &image, &result,
+                                 ts_op_progress_func, &progress, &error);
+      ts_op_progress_func (1.0, "done", &progress);
+      ts_op_progress_clear (&progress);
+    }
+
+  if (status == TS_OK)
+    ts_op_write_output (output, roi, &result, box.x, box.y);
+  else if (image.pixels)
+    {
+      /* A filter that fails leaves the picture as it was (and says so),
+       * rather than erasing it. */
+      g_warning ("%s: %s; the image is left unchanged", gegl_operation_get_name (operation),
+                 error.message[0] ? error.message : ts_status_string (status));
+      gegl_buffer_clear (output, roi);
+      ts_op_write_output (output, roi, &image, box.x, box.y);
+    }
+  else
+    ts_op_fail (operation, output, roi, error.message[0] ? error.message
+                                        : "the input is empty: there is nothing to make tileable");
+
+  g_free (result.pixels);
+  g_free (image.pixels);
+  return TRUE;
+}
+
+static void
+gegl_op_class_init (GeglOpClass *klass)
+{
+  GeglOperationClass       *operation_class = GEGL_OPERATION_CLASS (klass);
+  GeglOperationFilterClass *filter_class = GEGL_OPERATION_FILTER_CLASS (klass);
+
+  operation_class->prepare                   = ts_op_prepare;
+  operation_class->get_bounding_box          = get_bounding_box;
+  operation_class->get_required_for_output   = ts_op_get_required_for_output;
+  operation_class->get_cached_region         = ts_op_get_cached_region;
+  operation_class->get_invalidated_by_change = ts_op_get_invalidated_by_change;
+  /* The engine has its own threads; GEGL must not split the work. */
+  operation_class->threaded                  = FALSE;
+  operation_class->want_in_place             = FALSE;
+  operation_class->cache_policy              = GEGL_CACHE_POLICY_ALWAYS;
+  filter_class->process                      = process;
+
+  gegl_operation_class_set_keys (operation_class,
+    "name",               "texsynth:tileable",
+    "title",              _("Make Seamless by Synthesis"),
+    "categories",         "map:tile",
+    "position-dependent", "true",
+    "description",        _("Makes an image tile seamlessly, horizontally, "
+                            "vertically or both, by re-synthesising only the "
+                            "parts near its edges from the image itself: "
+                            "structure continues across the edges, without "
+                            "cross-fading, and the rest of the picture stays "
+                            "as it is"),
+    "gimp:menu-path",     "<Image>/Filters/Map",
+    "gimp:menu-label",    _("Make Seamless by Synthesis\xe2\x80\xa6"),
+    NULL);
+}
+
+#endif
