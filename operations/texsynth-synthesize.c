@@ -29,44 +29,7 @@ property_boolean (tileable, _("Tileable"), FALSE)
   description (_("Make the result tile seamlessly: its left edge continues "
                  "its right edge and its top edge its bottom edge"))
 
-property_int (quality, _("Quality"), ts_op_default_params ().quality)
-  description (_("Higher values compare more candidates per pixel: fewer "
-                 "visible seams and repetitions, but slower"))
-  value_range (TS_MIN_QUALITY, TS_MAX_QUALITY)
-
-property_seed (seed, _("Random seed"), rand)
-  description (_("The same seed with the same settings gives the same "
-                 "texture; change it for another variation"))
-
-property_int (patch_size, _("Patch size"), ts_op_default_params ().patch_size)
-  description (_("Size in pixels of the neighbourhoods compared in the "
-                 "first iterations of each level; larger keeps larger "
-                 "structures together. 0 chooses automatically; even "
-                 "values are rounded up to odd"))
-  value_range (0, TS_MAX_PATCH_SIZE)
-  ui_meta     ("role", "advanced")
-
-property_int (fine_patch_size, _("Fine patch size"), ts_op_default_params ().fine_patch_size)
-  description (_("Size in pixels of the neighbourhoods of the last "
-                 "iterations, at most the patch size; smaller gives "
-                 "sharper detail. 0 chooses automatically; even values "
-                 "are rounded up to odd"))
-  value_range (0, TS_MAX_PATCH_SIZE)
-  ui_meta     ("role", "advanced")
-
-property_int (iterations, _("Iterations"), ts_op_default_params ().max_iterations)
-  description (_("Maximum number of refinement iterations per level "
-                 "(0 chooses automatically)"))
-  value_range (0, TS_MAX_ITERATIONS)
-  ui_range    (0, 20)
-  ui_meta     ("role", "advanced")
-
-property_boolean (histogram_matching, _("Histogram matching"),
-                  ts_op_default_params ().histogram_matching)
-  description (_("Keep the colour distribution of the result close to the "
-                 "exemplar's, so rare colours are neither lost nor "
-                 "overused"))
-  ui_meta     ("role", "advanced")
+#include "synthesis-properties.h"
 
 #else
 
