@@ -8,7 +8,7 @@ TsStatus
 ts_axis_grid_init (TsAxisGrid *grid, size_t n, size_t radius, size_t spacing,
                    size_t offset, bool wrap)
 {
-  size_t span = n + 2 * radius, filled = 0;
+  size_t span = n + 2 * radius;
 
   grid->n = n;
   grid->radius = radius;
@@ -42,11 +42,9 @@ ts_axis_grid_init (TsAxisGrid *grid, size_t n, size_t radius, size_t spacing,
         ptrdiff_t t = (ptrdiff_t) i - (ptrdiff_t) radius;
         size_t p = ts_border_index (t, n, wrap);
         grid->virtual_coord[grid->virtual_start[p] + fill[p]++] = t;
-        filled++;
       }
     free (fill);
   }
-  (void) filled;
   return TS_OK;
 }
 
