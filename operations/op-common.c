@@ -203,6 +203,26 @@ ts_op_get_invalidated_by_change (GeglOperation       *operation,
   return GEGL_OPERATION_GET_CLASS (operation)->get_bounding_box (operation);
 }
 
+void
+ts_op_class_init_whole_image (GeglOperationClass *operation_class,
+                              GeglRectangle (*get_bounding_box) (GeglOperation *),
+                              gboolean (*process) (GeglOperation *, GeglBuffer *, GeglBuffer *,
+                                                   const GeglRectangle *, gint))
+{
+  GeglOperationFilterClass *filter_class = GEGL_OPERATION_FILTER_CLASS (operation_class);
+
+  operation_class->prepare                   = ts_op_prepare;
+  operation_class->get_bounding_box          = get_bounding_box;
+  operation_class->get_required_for_output   = ts_op_get_required_for_output;
+  operation_class->get_cached_region         = ts_op_get_cached_region;
+  operation_class->get_invalidated_by_change = ts_op_get_invalidated_by_change;
+  /* The engine has its own threads; GEGL must not split the work. */
+  operation_class->threaded                  = FALSE;
+  operation_class->want_in_place             = FALSE;
+  operation_class->cache_policy              = GEGL_CACHE_POLICY_ALWAYS;
+  filter_class->process                      = process;
+}
+
 int
 ts_op_odd_size (int size)
 {

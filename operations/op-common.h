@@ -71,6 +71,13 @@ GeglRectangle ts_op_get_cached_region (GeglOperation *operation, const GeglRecta
 GeglRectangle ts_op_get_invalidated_by_change (GeglOperation *operation, const gchar *input_pad,
                                                const GeglRectangle *input_region);
 
+/* Installs the methods above plus `get_bounding_box` and `process` on a
+ * filter class: one whole-image, uncached-per-tile, single-call op. */
+void ts_op_class_init_whole_image (GeglOperationClass *operation_class,
+                                   GeglRectangle (*get_bounding_box) (GeglOperation *),
+                                   gboolean (*process) (GeglOperation *, GeglBuffer *, GeglBuffer *,
+                                                        const GeglRectangle *, gint));
+
 /* A patch-size property as the engine takes it: 0 stays automatic, other
  * values become odd and at least TS_MIN_PATCH_SIZE (sliders give any
  * integer). */

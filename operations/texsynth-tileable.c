@@ -148,18 +148,8 @@ static void
 gegl_op_class_init (GeglOpClass *klass)
 {
   GeglOperationClass       *operation_class = GEGL_OPERATION_CLASS (klass);
-  GeglOperationFilterClass *filter_class = GEGL_OPERATION_FILTER_CLASS (klass);
 
-  operation_class->prepare                   = ts_op_prepare;
-  operation_class->get_bounding_box          = get_bounding_box;
-  operation_class->get_required_for_output   = ts_op_get_required_for_output;
-  operation_class->get_cached_region         = ts_op_get_cached_region;
-  operation_class->get_invalidated_by_change = ts_op_get_invalidated_by_change;
-  /* The engine has its own threads; GEGL must not split the work. */
-  operation_class->threaded                  = FALSE;
-  operation_class->want_in_place             = FALSE;
-  operation_class->cache_policy              = GEGL_CACHE_POLICY_ALWAYS;
-  filter_class->process                      = process;
+  ts_op_class_init_whole_image (operation_class, get_bounding_box, process);
 
   gegl_operation_class_set_keys (operation_class,
     "name",               "texsynth:tileable",
