@@ -223,14 +223,24 @@ ts_op_class_init_whole_image (GeglOperationClass *operation_class,
   filter_class->process                      = process;
 }
 
-int
-ts_op_odd_size (int size)
+static int
+odd_size (int size)
 {
   if (size <= 0)
     return 0;
   if (size < TS_MIN_PATCH_SIZE)
     return TS_MIN_PATCH_SIZE;
   return size | 1;
+}
+
+void
+ts_op_patch_sizes (int patch_size, int fine_patch_size, int *patch_out, int *fine_out)
+{
+  *patch_out = odd_size (patch_size);
+  *fine_out = odd_size (fine_patch_size);
+  /* Only a combination the user chose explicitly can conflict. */
+  if (*patch_out && *fine_out > *patch_out)
+    *fine_out = *patch_out;
 }
 
 void

@@ -78,10 +78,11 @@ void ts_op_class_init_whole_image (GeglOperationClass *operation_class,
                                    gboolean (*process) (GeglOperation *, GeglBuffer *, GeglBuffer *,
                                                         const GeglRectangle *, gint));
 
-/* A patch-size property as the engine takes it: 0 stays automatic, other
- * values become odd and at least TS_MIN_PATCH_SIZE (sliders give any
- * integer). */
-int ts_op_odd_size (int size);
+/* The two patch-size properties as the engine takes them: 0 stays
+ * automatic, other values become odd and at least TS_MIN_PATCH_SIZE
+ * (sliders give any integer), and a fine size chosen above the chosen
+ * large size is lowered to it. */
+void ts_op_patch_sizes (int patch_size, int fine_patch_size, int *patch_out, int *fine_out);
 
 /* The defined result of a failed synthesis: warn "<op name>: <message>"
  * and make `roi` of `output` fully transparent. */

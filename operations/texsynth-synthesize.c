@@ -64,11 +64,8 @@ fill_params (GeglProperties *o, TsParams *params)
   params->wrap_x = params->wrap_y = o->tileable;
   params->quality = o->quality;
   params->seed = o->seed;
-  params->patch_size = ts_op_odd_size (o->patch_size);
-  params->fine_patch_size = ts_op_odd_size (o->fine_patch_size);
-  /* Only a combination the user chose explicitly can conflict. */
-  if (params->patch_size && params->fine_patch_size > params->patch_size)
-    params->fine_patch_size = params->patch_size;
+  ts_op_patch_sizes (o->patch_size, o->fine_patch_size,
+                     &params->patch_size, &params->fine_patch_size);
   params->max_iterations = o->iterations;
   params->histogram_matching = o->histogram_matching;
 }
