@@ -29,6 +29,8 @@ ts_status_string (TsStatus status)
     case TS_ERROR_TOO_LARGE: return "the output would need too much memory";
     case TS_ERROR_OUT_OF_MEMORY: return "out of memory";
     case TS_ERROR_CANCELLED: return "cancelled";
+    case TS_ERROR_IO: return "a file could not be read or written";
+    case TS_ERROR_BAD_FILE: return "the file is truncated or malformed";
     }
   return "unknown error";
 }

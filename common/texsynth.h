@@ -38,7 +38,9 @@ typedef enum
   TS_ERROR_EXEMPLAR_TOO_SMALL,   /* smaller than the smallest neighbourhood */
   TS_ERROR_TOO_LARGE,            /* would need more memory than allowed   */
   TS_ERROR_OUT_OF_MEMORY,        /* an allocation failed                  */
-  TS_ERROR_CANCELLED             /* the progress callback asked to stop   */
+  TS_ERROR_CANCELLED,            /* the progress callback asked to stop   */
+  TS_ERROR_IO,                   /* a file could not be read or written   */
+  TS_ERROR_BAD_FILE              /* a file is truncated or malformed      */
 } TsStatus;
 
 /* A short, static, human-readable description of a status. */
