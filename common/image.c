@@ -55,8 +55,13 @@ ts_image_to_working (const TsImage *in, TsImage *out)
   for (size_t i = 0; i < n * TS_CHANNELS; i++)
     if (!isfinite (out->pixels[i]))
       out->pixels[i] = 0.0f;   /* NaN/Inf from float files would poison every distance */
+  /* Alpha out of [0, 1] (float files allow it) would be copied into the
+   * result as it is and weigh more than colour in every distance. */
   for (size_t i = 0; i < n; i++)
-    out->pixels[i * TS_CHANNELS + 3] *= TS_ALPHA_SCALE;
+    {
+      float *alpha = out->pixels + i * TS_CHANNELS + 3;
+      *alpha = (*alpha < 0.0f ? 0.0f : *alpha > 1.0f ? 1.0f : *alpha) * TS_ALPHA_SCALE;
+    }
   return TS_OK;
 }
 

@@ -13,7 +13,6 @@
 /* Measured on the 16 shared exemplars (256x256): quality 1, 2, 3, 4, 6 give
  * median coherence 1.07, 1.06, 1.14, 1.17, 1.18 and completeness 0.69,
  * 0.65, 0.72, 0.73, 0.69; 2 is best and fast. */
-#define TS_DEFAULT_QUALITY 2
 
 const char *
 ts_status_string (TsStatus status)
@@ -61,8 +60,8 @@ ts_params_init (TsParams *params)
   params->histogram_matching = true;
 }
 
-static size_t
-default_memory_limit (void)
+size_t
+ts_default_memory_limit (void)
 {
   long pages = sysconf (_SC_PHYS_PAGES), page_size = sysconf (_SC_PAGESIZE);
   size_t gib = (size_t) 1 << 30, limit = gib;
@@ -81,8 +80,12 @@ exemplar_has_opaque_pixel (const TsImage *exemplar)
 {
   size_t n = exemplar->width * exemplar->height;
   for (size_t i = 0; i < n; i++)
-    if (exemplar->pixels[i * TS_CHANNELS + 3] > 0.0f)
-      return true;
+    {
+      /* As the engine reads it: a non-finite alpha counts as 0. */
+      float alpha = exemplar->pixels[i * TS_CHANNELS + 3];
+      if (alpha > 0.0f && isfinite (alpha))
+        return true;
+    }
   return false;
 }
 
@@ -204,7 +207,7 @@ ts_params_validate (const TsParams *params, const TsImage *exemplar, TsError *er
 
   if (status != TS_OK)
     return status;
-  limit = params->memory_limit ? params->memory_limit : default_memory_limit ();
+  limit = params->memory_limit ? params->memory_limit : ts_default_memory_limit ();
   if (bytes > limit)
     return ts_fail (error, TS_ERROR_TOO_LARGE,
                     "a %zux%zu output from a %zux%zu exemplar would need about %.1f MiB, "
