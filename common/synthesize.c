@@ -234,6 +234,10 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
           matches = malloc (gx.centres * gy.centres * sizeof (TsMatch));
           status = matches ? ts_mstep (state, &gx, &gy, pass, plan->k_use, stream, matches)
                            : TS_ERROR_OUT_OF_MEMORY;
+          /* An iteration of a large level takes long: a cancel between
+           * its two steps halves the wait. */
+          if (status == TS_OK && !report (run, 0.0, "optimizing"))
+            status = TS_ERROR_CANCELLED;
           if (status == TS_OK)
             {
               if (histogram)
