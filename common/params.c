@@ -211,7 +211,7 @@ ts_params_validate (const TsParams *params, const TsImage *exemplar, TsError *er
   if (bytes > limit)
     return ts_fail (error, TS_ERROR_TOO_LARGE,
                     "a %zux%zu output from a %zux%zu exemplar would need about %.1f MiB, "
-                    "more than the limit of %.1f MiB; choose a smaller size",
+                    "more than the limit of %.1f MiB; choose a smaller size or raise the memory limit",
                     params->output_width, params->output_height, exemplar->width,
                     exemplar->height, (double) bytes / 1048576.0, (double) limit / 1048576.0);
   return TS_OK;

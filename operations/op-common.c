@@ -243,6 +243,12 @@ ts_op_patch_sizes (int patch_size, int fine_patch_size, int *patch_out, int *fin
     *fine_out = *patch_out;
 }
 
+size_t
+ts_op_memory_limit (int mebibytes)
+{
+  return mebibytes > 0 ? (size_t) mebibytes << 20 : 0;
+}
+
 void
 ts_op_fail (GeglOperation       *operation,
             GeglBuffer          *output,

@@ -84,6 +84,9 @@ void ts_op_class_init_whole_image (GeglOperationClass *operation_class,
  * large size is lowered to it. */
 void ts_op_patch_sizes (int patch_size, int fine_patch_size, int *patch_out, int *fine_out);
 
+/* The memory-limit property (MiB, 0 = the engine's default) in bytes. */
+size_t ts_op_memory_limit (int mebibytes);
+
 /* The defined result of a failed synthesis: warn "<op name>: <message>"
  * and make `roi` of `output` fully transparent. */
 void ts_op_fail (GeglOperation       *operation,

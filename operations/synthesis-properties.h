@@ -41,3 +41,11 @@ property_boolean (histogram_matching, _("Histogram matching"),
   description (_("Keep the colour distribution of the result close to the "
                  "input's, so rare colours are neither lost nor overused"))
   ui_meta     ("role", "advanced")
+
+property_int (memory_limit, _("Memory limit (MiB)"), 0)
+  description (_("Refuse, with a message saying how much it would need, a "
+                 "synthesis that needs more memory than this; 0 means a "
+                 "quarter of the RAM (at least 1 GiB)"))
+  value_range (0, G_MAXINT)
+  ui_range    (0, 65536)
+  ui_meta     ("role", "advanced")

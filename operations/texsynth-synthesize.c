@@ -68,6 +68,7 @@ fill_params (GeglProperties *o, TsParams *params)
                      &params->patch_size, &params->fine_patch_size);
   params->max_iterations = o->iterations;
   params->histogram_matching = o->histogram_matching;
+  params->memory_limit = ts_op_memory_limit (o->memory_limit);
 }
 
 static gboolean
