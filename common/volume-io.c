@@ -179,26 +179,37 @@ TsStatus
 ts_input_open (TsInputFile *f, const char *path, TsError *error)
 {
   struct stat st;
+  int fd, flags;
 
   f->path = path;
   f->file = NULL;
   f->length = 0;
   if (!path || !*path)
     return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no file name given");
-  f->file = fopen (path, "rb");
-  if (!f->file)
+  /* O_NONBLOCK: opening a FIFO must not wait for a writer; it is then
+   * refused as not a regular file. */
+  fd = open (path, O_RDONLY | O_NONBLOCK);
+  if (fd < 0)
     return ts_fail (error, TS_ERROR_IO, "cannot read '%s': %s", path, strerror (errno));
-  if (fstat (fileno (f->file), &st) != 0)
+  if (fstat (fd, &st) != 0)
     {
       int errnum = errno;
-      ts_input_close (f);
+      close (fd);
       return ts_fail (error, TS_ERROR_IO, "cannot read '%s': %s", path, strerror (errnum));
     }
   if (!S_ISREG (st.st_mode))
     {
-      ts_input_close (f);
+      close (fd);
       return ts_fail (error, TS_ERROR_IO, "cannot read '%s': %s", path,
                       S_ISDIR (st.st_mode) ? strerror (EISDIR) : "not a regular file");
+    }
+  flags = fcntl (fd, F_GETFL);
+  if (flags == -1 || fcntl (fd, F_SETFL, flags & ~O_NONBLOCK) == -1
+      || !(f->file = fdopen (fd, "rb")))
+    {
+      int errnum = errno;
+      close (fd);
+      return ts_fail (error, TS_ERROR_IO, "cannot read '%s': %s", path, strerror (errnum));
     }
   f->length = (uint64_t) st.st_size;
   return TS_OK;

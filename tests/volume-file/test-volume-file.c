@@ -40,16 +40,13 @@ make_volume (size_t size, unsigned channels)
   return v;
 }
 
-/* A path in the scratch folder; the last four stay valid. */
-static const char *
-path_in_dir (const char *name)
-{
-  static char paths[4][512];
-  static int next;
-  char *path = paths[next++ % 4];
+#define PATH_SIZE 512
 
-  snprintf (path, sizeof paths[0], "%s/%s", dir, name);
-  return path;
+/* `name` in the scratch folder. */
+static void
+scratch_path (char path[PATH_SIZE], const char *name)
+{
+  snprintf (path, PATH_SIZE, "%s/%s", dir, name);
 }
 
 static uint8_t *
@@ -124,7 +121,8 @@ test_vol_bytes (void)
   TsVolume8 v = make_volume (SIZE, 4), back;
   TsError error;
   TsVolumeFormat format = TS_VOLUME_FORMAT_DDS;
-  const char *path = path_in_dir ("pattern.vol");
+  char path[PATH_SIZE];
+  scratch_path (path, "pattern.vol");
   size_t length;
   uint8_t *data;
 
@@ -185,7 +183,8 @@ test_dds_bytes (void)
   TsVolume8 v = make_volume (SIZE, 4), back;
   TsError error;
   TsVolumeFormat format = TS_VOLUME_FORMAT_VOL;
-  const char *path = path_in_dir ("pattern.dds");
+  char path[PATH_SIZE];
+  scratch_path (path, "pattern.dds");
   size_t length;
   uint8_t *data;
 
@@ -296,8 +295,10 @@ static void
 test_truncation (const char *name, bool dds)
 {
   TsVolume8 v = make_volume (SIZE, 4);
-  const char *path = path_in_dir (name);
-  const char *cut = path_in_dir ("cut");
+  char path[PATH_SIZE];
+  scratch_path (path, name);
+  char cut[PATH_SIZE];
+  scratch_path (cut, "cut");
   TsError error;
   size_t length, header = dds ? 148 : 4096, total;
   uint8_t *data;
@@ -331,7 +332,8 @@ static void
 test_bad_headers (void)
 {
   uint8_t header[4096 + 64] = { 0 };
-  const char *path = path_in_dir ("bad.vol");
+  char path[PATH_SIZE];
+  scratch_path (path, "bad.vol");
   TsVolume8 v;
   TsError error;
   struct { size_t offset; uint32_t value; TsStatus status; const char *fragment; } cases[] = {
@@ -377,8 +379,18 @@ test_bad_headers (void)
   write_all (path, "VOLV and more bytes", 19);
   expect_read_failure (path, TS_ERROR_BAD_FILE, "VOLU", "wrong magic");
   expect_read_failure (dir, TS_ERROR_IO, strerror (EISDIR), "a directory");
-  expect_read_failure (path_in_dir ("missing.vol"), TS_ERROR_IO, strerror (ENOENT), "missing");
+  scratch_path (path, "missing.vol");
+  expect_read_failure (path, TS_ERROR_IO, strerror (ENOENT), "missing");
   expect_read_failure ("", TS_ERROR_INVALID_ARGUMENT, NULL, "empty path");
+  /* A FIFO without a writer: refused at once instead of waiting. */
+  scratch_path (path, "fifo.vol");
+  if (mkfifo (path, 0600) == 0)
+    {
+      expect_read_failure (path, TS_ERROR_IO, "not a regular file", "a FIFO");
+      unlink (path);
+    }
+  scratch_path (path, "bad.vol");
+  expect_read_failure ("/dev/zero", TS_ERROR_IO, "not a regular file", "a device");
   unlink (path);
 }
 
@@ -395,7 +407,8 @@ static void
 test_random_bytes (void)
 {
   TsVolume8 good = make_volume (4, 4);
-  const char *path = path_in_dir ("random");
+  char path[PATH_SIZE];
+  scratch_path (path, "random");
   uint8_t base[2][4096 + 256];
   uint8_t data[4096 + 256];
   uint32_t state = 12345;
@@ -458,8 +471,9 @@ static void
 test_atomic_writes (void)
 {
   TsVolume8 v = make_volume (SIZE, 4), other = make_volume (SIZE, 2);
-  const char *target = path_in_dir ("keep.vol");
-  char file_as_folder[600];
+  char target[PATH_SIZE];
+  scratch_path (target, "keep.vol");
+  char file_as_folder[PATH_SIZE + 8], missing_folder[PATH_SIZE];
   size_t before_length, after_length;
   uint8_t *before, *after;
   struct rlimit old_limit, limit;
@@ -471,7 +485,8 @@ test_atomic_writes (void)
   before = read_all (target, &before_length);
   entries = count_entries ();
 
-  status = ts_volume_write_vol (path_in_dir ("no/such/folder.vol"), NULL, &v, &error);
+  scratch_path (missing_folder, "no/such/folder.vol");
+  status = ts_volume_write_vol (missing_folder, NULL, &v, &error);
   CHECK (status == TS_ERROR_IO && strstr (error.message, "cannot write '")
          && strstr (error.message, "no/such/folder.vol") && strstr (error.message, strerror (ENOENT)),
          "missing folder: %s", error.message);
@@ -547,9 +562,14 @@ main (void)
   /* Hostile headers announce up to 256 GiB: a reader that allocated
    * before checking would fail with "out of memory" instead of the
    * expected message under this cap on the address space. */
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+  /* (Sanitizers reserve terabytes of shadow memory.) */
   limit.rlim_cur = limit.rlim_max = (rlim_t) 1 << 32;
   if (setrlimit (RLIMIT_AS, &limit) != 0)
     fprintf (stderr, "note: cannot cap the address space: %s\n", strerror (errno));
+#else
+  (void) limit;
+#endif
 
   test_vol_bytes ();
   test_dds_bytes ();
