@@ -218,7 +218,9 @@ expand_to_rgba (const guint8 *in, size_t size, unsigned channels, guint8 *out, s
 static gboolean
 ensure_image (GeglOperation *operation, GeglProperties *o, LoadState *state)
 {
-  ImageKey key = { o->axis, o->index, o->layout };
+  /* The index does not change an atlas. */
+  ImageKey key = { o->axis, o->layout == TEXSYNTH_VOLUME_LOAD_LAYOUT_ATLAS ? 0 : o->index,
+                   o->layout };
   const TsVolume8 *volume = &state->volume;
   size_t size = volume->size, stride, columns = 1, rows = 1, slices = 1, first;
   guint8 *slice;
