@@ -1,0 +1,194 @@
+# Bad input through the GEGL operations, in the gegl tool and in-process
+# (GObject introspection): every case ends with exit status 0, no crash or
+# hang, an image of the requested size, and either no warning or a warning
+# from the op that says what was wrong (with a transparent result for
+# texsynth:synthesize, the unchanged image for texsynth:tileable).
+# Prints how many distinct bad inputs were tried.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+
+import math
+import os
+import resource
+import struct
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "ops"))
+import tsops  # noqa: E402
+from tsops import check, note  # noqa: E402
+
+SYNTH, TILE = "texsynth:synthesize", "texsynth:tileable"
+for op in (SYNTH, TILE):
+    code, _, _ = tsops.run_gegl(["--exists", op])
+    if code != 0:
+        tsops.die("gegl cannot find %s (GEGL_PATH=%s)" % (op, os.environ.get("GEGL_PATH")))
+
+tmp = tsops.workdir()
+bark = tsops.exemplar("bark.png")
+out = os.path.join(tmp, "out.png")
+tried = {"accepted": 0, "refused": 0}
+
+
+def op_warnings(stderr, op):
+    return [line for line in stderr.splitlines() if op + ": " in line]
+
+
+def cli_case(label, source, op, props, size, word=None, glib_word=None):
+    """One gegl run. `source` is ["-i", PATH, ops...] or [ops...]; `word`
+    None means the op must accept the input, else its warning must say it."""
+    if source and source[0] == "-i":
+        args = ["-i", source[1], "-o", out, "--"] + source[2:]
+    else:
+        args = ["-o", out, "--"] + source
+    args += [op] + ["%s=%s" % kv for kv in props.items()]
+    if os.path.exists(out):
+        os.unlink(out)
+    code, _, err = tsops.run_gegl(args, timeout=300)
+    warnings = op_warnings(err, op)
+    w, h, px = tsops.load(out) if code == 0 and os.path.isfile(out) else (0, 0, [])
+    ok = code == 0 and (w, h) == size
+    if word is None:
+        ok = ok and not warnings
+        tried["accepted"] += 1
+    else:
+        ok = ok and bool(warnings) and word in warnings[0]
+        if ok and op == SYNTH:
+            ok = max(tsops.alphas(px)) == 0.0
+        tried["refused"] += 1
+    if glib_word:
+        ok = ok and glib_word in err
+    check(ok, "%s: %s %s -> exit %d, %dx%d, %s" % (
+        op, label, props, code, w, h,
+        warnings[0].split(op + ": ")[1] if warnings else "no warning from the op"))
+    return err
+
+
+note("-- degenerate exemplars through the gegl tool")
+crop = lambda w, h: ["-i", bark, "gegl:crop", "width=%d" % w, "height=%d" % h]
+color = lambda value, w, h: ["gegl:color", "value=%s" % value, "gegl:crop", "width=%d" % w,
+                             "height=%d" % h]
+for op, props, size in ((SYNTH, {"width": 24, "height": 20, "seed": 3}, None),
+                        (TILE, {"seed": 3}, "input")):
+    cases = [
+        ("no (0x0) exemplar", [], (0, 0), "no pixels"),
+        ("1x1 exemplar", crop(1, 1), (1, 1), "1x1"),
+        ("2x5 exemplar", crop(2, 5), (2, 5), "2x5"),
+        ("7x7 exemplar", crop(7, 7), (7, 7), "7x7"),
+        ("transparent exemplar", color("transparent", 16, 16), (16, 16), "transparent"),
+        ("one-colour exemplar", color("rgb(0.2,0.5,0.7)", 16, 16), (16, 16), None),
+        ("unbounded exemplar", ["gegl:color", "value=red"], None, "unbounded"),
+    ]
+    for label, source, input_size, word in cases:
+        if size is None:
+            expected = (props["width"], props["height"])
+        elif input_size is None or input_size == (0, 0):
+            continue   # tileable keeps the input's size: nothing to write
+        else:
+            expected = input_size
+        if op == SYNTH and label == "7x7 exemplar":
+            word = None   # large enough for synthesis, too small to make tileable
+        cli_case(label, source, op, props, expected, word)
+
+note("-- every property at its minimum and maximum, and out of range")
+small = {"width": 24, "height": 20, "seed": 3}
+limits = [
+    ({"width": 1, "height": 1}, None),
+    ({"width": 16384, "height": 1}, None),
+    ({"quality": 1}, None), ({"quality": 10}, None),
+    ({"patch-size": 0}, None), ({"patch-size": 31}, None),
+    ({"fine-patch-size": 0}, None), ({"fine-patch-size": 31}, None),
+    ({"iterations": 0}, None), ({"iterations": 100}, None),
+    ({"seed": 0}, None), ({"seed": 2147483647}, None),
+    ({"histogram-matching": "false"}, None), ({"tileable": "true"}, None),
+    ({"memory-limit": 0}, None), ({"memory-limit": 2147483647}, None),
+    ({"memory-limit": 1}, "MiB"),
+]
+for extra, word in limits:
+    props = dict(small, **extra)
+    size = (int(props["width"]), int(props["height"]))
+    cli_case("limit", ["-i", bark], SYNTH, props, size, word)
+for extra, glib in [({"width": 0}, "width"), ({"quality": 99}, "quality"),
+                    ({"patch-size": -4}, "patch-size"), ({"iterations": 1000}, "iterations")]:
+    # GObject refuses the value with its own warning and keeps the default.
+    props = dict(small, **extra)
+    size = (512 if "width" in extra else 24, 20)
+    cli_case("out of range", ["-i", bark], SYNTH, props, size, None, glib_word=glib)
+
+bark_size = tsops.load(bark)[:2]
+for extra, word in [({"seam-width": 0.02}, None), ({"seam-width": 0.25}, None),
+                    ({"direction": "horizontal"}, None), ({"direction": "vertical"}, None),
+                    ({"quality": 1, "patch-size": 31, "fine-patch-size": 31}, None),
+                    ({"memory-limit": 1}, "MiB")]:
+    cli_case("limit", ["-i", bark], TILE, dict({"seed": 3}, **extra), bark_size, word)
+
+note("-- a huge size is refused from the estimate, before anything is allocated")
+code, _, err = tsops.run_gegl(["-i", bark, "-o", out, "--", SYNTH, "width=16384",
+                               "height=16384", "gegl:crop", "width=8", "height=8"])
+warnings = op_warnings(err, SYNTH)
+peak_mib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0
+tried["refused"] += 1
+check(code == 0 and warnings and "would need about" in warnings[0] and "MiB" in warnings[0]
+      and "raise the memory limit" in warnings[0],
+      "16384x16384: %s" % (warnings[0].split(SYNTH + ": ")[1] if warnings else "no warning"))
+check(peak_mib < 1024, "the refusal peaks at %.0f MiB of memory (< 1024), far below the "
+      "16 GiB it would need" % peak_mib)
+code, _, err = tsops.run_gegl(["-i", bark, "-o", out, "--", SYNTH, "width=64", "height=64",
+                               "memory-limit=1"])
+need = op_warnings(err, SYNTH)
+tried["refused"] += 1
+check(need and "limit of 1.0 MiB" in need[0], "memory-limit=1 refuses 64x64 and says the limit")
+code, _, err = tsops.run_gegl(["-i", bark, "-o", out, "--", SYNTH, "width=64", "height=64",
+                               "memory-limit=64"])
+tried["accepted"] += 1
+check(code == 0 and not op_warnings(err, SYNTH), "memory-limit=64 lets 64x64 through")
+
+note("-- pixel formats and non-finite pixels, in-process")
+Gegl = tsops.gegl()
+bw, bh, bark_px = tsops.load(bark, "R'G'B'A float")
+
+
+def run_on_buffer(op, fmt, pixels, w, h, **props):
+    data = struct.pack("%df" % len(pixels), *pixels)
+    rgba = Gegl.Buffer.new("R'G'B'A float", 0, 0, w, h)
+    rgba.set(Gegl.Rectangle.new(0, 0, w, h), "R'G'B'A float", data)
+    buf = Gegl.Buffer.new(fmt, 0, 0, w, h)
+    rgba.copy(Gegl.Rectangle.new(0, 0, w, h), Gegl.AbyssPolicy.NONE, buf,
+              Gegl.Rectangle.new(0, 0, w, h))
+    graph = Gegl.Node()
+    src = graph.create_child("gegl:buffer-source")
+    src.set_property("buffer", buf)
+    node = graph.create_child(op)
+    for key, value in props.items():
+        node.set_property(key, value)
+    src.connect_to("output", node, "input")
+    return tsops.render(node)
+
+
+formats = ["R'G'B'A u16", "RGBA float", "R'G'B'A half", "Y' u8", "Y'A u8", "Y u16", "YA float",
+           "R'G'B' u8", "RGB float"]
+for fmt in formats:
+    for op, props in ((SYNTH, {"width": 40, "height": 32, "seed": 2}), (TILE, {"seed": 2})):
+        w, h, px = run_on_buffer(op, fmt, bark_px, bw, bh, **props)
+        expected = (40, 32) if op == SYNTH else (bw, bh)
+        finite = all(math.isfinite(v) for v in px)
+        tried["accepted"] += 1
+        check((w, h) == expected and finite and max(tsops.alphas(px)) > 0.99,
+              "%s: %s exemplar gives an opaque, finite %dx%d result" % (op, fmt, w, h))
+
+for label, value, channel in [("NaN", float("nan"), 0), ("+Inf", float("inf"), 1),
+                              ("-Inf", float("-inf"), 2), ("NaN alpha", float("nan"), 3),
+                              ("alpha 1e30", 1e30, 3)]:
+    px = list(bark_px)
+    for i in range(0, bw * bh, 5):
+        px[4 * i + channel] = value
+    for op, props in ((SYNTH, {"width": 40, "height": 32, "seed": 2}), (TILE, {"seed": 2})):
+        w, h, res = run_on_buffer(op, "RGBA float", px, bw, bh, **props)
+        finite = all(math.isfinite(v) for v in res)
+        alpha_ok = all(0.0 <= a <= 1.0 for a in tsops.alphas(res))
+        tried["accepted"] += 1
+        check(finite and alpha_ok, "%s: exemplar with %s pixels gives finite pixels, alpha in "
+              "[0, 1]" % (op, label))
+
+total = tried["accepted"] + tried["refused"]
+note("\nops bad-input figures: %d distinct inputs tried, %d refused with a warning from the op, "
+     "%d accepted, 0 crashes, 0 hangs" % (total, tried["refused"], tried["accepted"]))
+tsops.finish()
