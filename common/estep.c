@@ -6,33 +6,6 @@
 #include <math.h>
 #include <string.h>
 
-static ptrdiff_t
-floor_div (ptrdiff_t a, ptrdiff_t b)
-{
-  ptrdiff_t q = a / b;
-  return (a % b != 0 && (a < 0) != (b < 0)) ? q - 1 : q;
-}
-
-/* Range [*lo, *hi] of centre indices within radius of virtual coordinate t;
- * false if empty. */
-static bool
-centres_covering (const TsAxisGrid *g, ptrdiff_t t, size_t *lo, size_t *hi)
-{
-  ptrdiff_t r = (ptrdiff_t) g->radius, s = (ptrdiff_t) g->spacing, o = (ptrdiff_t) g->offset;
-  ptrdiff_t a = -floor_div (-(t - r - o), s);    /* ceil */
-  ptrdiff_t b = floor_div (t + r - o, s);
-
-  if (a < 0)
-    a = 0;
-  if (b > (ptrdiff_t) g->centres - 1)
-    b = (ptrdiff_t) g->centres - 1;
-  if (a > b)
-    return false;
-  *lo = (size_t) a;
-  *hi = (size_t) b;
-  return true;
-}
-
 /* Votes are kept in a local list so the second pass (nearest to the mean)
  * need not gather them again; only degenerate cases (tiny mirrored outputs
  * with huge neighbourhoods) overflow it and fall back to gathering twice. */
@@ -118,13 +91,13 @@ collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxis
     {
       ptrdiff_t ty = gy->virtual_coord[vy];
       size_t jy_lo, jy_hi;
-      if (!centres_covering (gy, ty, &jy_lo, &jy_hi))
+      if (!ts_axis_grid_covering (gy, ty, &jy_lo, &jy_hi))
         continue;
       for (size_t vx = gx->virtual_start[px]; vx < gx->virtual_start[px + 1]; vx++)
         {
           ptrdiff_t tx = gx->virtual_coord[vx];
           size_t jx_lo, jx_hi;
-          if (!centres_covering (gx, tx, &jx_lo, &jx_hi))
+          if (!ts_axis_grid_covering (gx, tx, &jx_lo, &jx_hi))
             continue;
           for (size_t jy = jy_lo; jy <= jy_hi; jy++)
             {

@@ -55,6 +55,33 @@ ts_axis_grid_centre (const TsAxisGrid *grid, size_t j)
   return (ptrdiff_t) (grid->offset + j * grid->spacing);
 }
 
+static inline ptrdiff_t
+ts_floor_div (ptrdiff_t a, ptrdiff_t b)
+{
+  ptrdiff_t q = a / b;
+  return (a % b != 0 && (a < 0) != (b < 0)) ? q - 1 : q;
+}
+
+/* Range [*lo, *hi] of the centre indices within radius of virtual
+ * coordinate t; false if empty. */
+static inline bool
+ts_axis_grid_covering (const TsAxisGrid *g, ptrdiff_t t, size_t *lo, size_t *hi)
+{
+  ptrdiff_t r = (ptrdiff_t) g->radius, s = (ptrdiff_t) g->spacing, o = (ptrdiff_t) g->offset;
+  ptrdiff_t a = -ts_floor_div (-(t - r - o), s);    /* ceil */
+  ptrdiff_t b = ts_floor_div (t + r - o, s);
+
+  if (a < 0)
+    a = 0;
+  if (b > (ptrdiff_t) g->centres - 1)
+    b = (ptrdiff_t) g->centres - 1;
+  if (a > b)
+    return false;
+  *lo = (size_t) a;
+  *hi = (size_t) b;
+  return true;
+}
+
 /* M-step: for every centre of gx x gy, the best exemplar neighbourhood of
  * the k-coherence candidate set. `matches` has gx->centres * gy->centres
  * entries. Returns TS_OK or TS_ERROR_OUT_OF_MEMORY. */

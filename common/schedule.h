@@ -22,6 +22,11 @@ typedef struct
   TsPass pass[2];
 } TsLevelPlan;
 
+#define TS_DEFAULT_QUALITY 2
+
+/* Default memory limit: a quarter of the RAM, at least 1 GiB. */
+size_t ts_default_memory_limit (void);
+
 /* Coarsest exemplar level's shorter side the pyramid aims for. */
 #define TS_COARSEST_SIDE 32
 

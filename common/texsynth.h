@@ -174,6 +174,57 @@ TsStatus ts_make_tileable (const TsTileableParams *params,
                            void                   *user_data,
                            TsError                *error);
 
+/* --- Solid (volume) textures from 2D exemplars (common/solid-*.c) -------
+ * Kopf et al. 2007: texture optimization over a cube so that the three
+ * axis-aligned slices through every voxel look like the exemplar(s).
+ * Volumes are size^3 voxels of TS_CHANNELS floats (as TsImage pixels),
+ * x fastest, then y, then z. A slice orthogonal to x shows (u, v) = (y, z),
+ * one orthogonal to y shows (x, z), one orthogonal to z shows (x, y). */
+
+typedef enum
+{
+  TS_AXIS_X = 0,
+  TS_AXIS_Y,
+  TS_AXIS_Z
+} TsAxis;
+
+#define TS_SOLID_MIN_SIZE 8
+#define TS_SOLID_MAX_SIZE 1024
+
+typedef struct
+{
+  size_t   size;               /* edge of the cube, TS_SOLID_MIN_SIZE ..   */
+  bool     periodic;           /* the volume tiles in x, y and z           */
+  int      quality;            /* as TsParams                              */
+  uint32_t seed;
+  int      patch_size;         /* 0 = automatic; else odd, 3 .. 31         */
+  int      max_iterations;     /* 0 = automatic; else 1 .. 100 per level   */
+  bool     histogram_matching; /* Kopf et al.'s re-weighting of votes      */
+  size_t   memory_limit;       /* bytes; 0 = default, as TsParams          */
+} TsSolidParams;
+
+/* Defaults: 128^3, periodic, default quality, histogram matching. */
+void     ts_solid_params_init (TsSolidParams *params);
+
+/* `exemplars[a]` is the exemplar of the slices orthogonal to axis a, or
+ * NULL to leave that orientation free; at least two must be given (the
+ * same image may be passed for all three). */
+TsStatus ts_solid_params_validate (const TsSolidParams *params,
+                                   const TsImage *const exemplars[3],
+                                   TsError *error);
+TsStatus ts_solid_estimate_memory (const TsSolidParams *params,
+                                   const TsImage *const exemplars[3],
+                                   size_t *bytes, TsError *error);
+
+/* Synthesises a volume into `volume` (size^3 * TS_CHANNELS floats,
+ * allocated by the caller); left untouched on failure. */
+TsStatus ts_synthesize_solid (const TsSolidParams *params,
+                              const TsImage *const exemplars[3],
+                              float *volume,
+                              TsProgressFunc progress,
+                              void *user_data,
+                              TsError *error);
+
 #ifdef __cplusplus
 }
 #endif
