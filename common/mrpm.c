@@ -178,8 +178,13 @@ search_pixel (const Ctx *c, Scratch *s, size_t x, size_t y, size_t n, const int3
     }
   if (c->m)
     {
-      memcpy (s->rd, seedd, nseed * sizeof (float));
-      memcpy (s->ri, seed, nseed * sizeof (int32_t));
+      /* The coarsest level has no seeds, and memcpy from NULL is
+       * undefined even for 0 bytes. */
+      if (nseed > 0)
+        {
+          memcpy (s->rd, seedd, nseed * sizeof (float));
+          memcpy (s->ri, seed, nseed * sizeof (int32_t));
+        }
       nr = nseed;
       for (size_t i = 0; i < ns; i++)
         {
