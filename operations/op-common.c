@@ -3,7 +3,19 @@
  */
 #include "op-common.h"
 
+#include <glib/gi18n-lib.h>
 #include <stdio.h>
+
+void
+ts_op_bind_textdomain (void)
+{
+#ifdef ENABLE_NLS
+  const gchar *dir = g_getenv ("TEXSYNTH_LOCALEDIR");
+
+  bindtextdomain (GETTEXT_PACKAGE, dir && *dir ? dir : LOCALEDIR);
+  bind_textdomain_codeset (GETTEXT_PACKAGE, "UTF-8");
+#endif
+}
 
 TsParams
 ts_op_default_params (void)
@@ -52,14 +64,14 @@ ts_op_read_input (GeglOperation *operation,
   if (gegl_rectangle_is_infinite_plane (&rect))
     {
       snprintf (message, message_size,
-                "the exemplar is unbounded (e.g. a fill or noise without a crop); "
-                "crop it to at most %dx%d pixels", TS_MAX_OUTPUT_SIDE, TS_MAX_OUTPUT_SIDE);
+                _("the exemplar is unbounded (e.g. a fill or noise without a crop); "
+                  "crop it to at most %dx%d pixels"), TS_MAX_OUTPUT_SIDE, TS_MAX_OUTPUT_SIDE);
       return FALSE;
     }
   if (too_large (&rect))
     {
       snprintf (message, message_size,
-                "the exemplar is %dx%d; its sides must be at most %d pixels",
+                _("the exemplar is %dx%d; its sides must be at most %d pixels"),
                 rect.width, rect.height, TS_MAX_OUTPUT_SIDE);
       return FALSE;
     }
@@ -69,7 +81,7 @@ ts_op_read_input (GeglOperation *operation,
   if (!image->pixels)
     {
       snprintf (message, message_size,
-                "out of memory reading the %dx%d exemplar (%.1f MiB)",
+                _("out of memory reading the %dx%d exemplar (%.1f MiB)"),
                 rect.width, rect.height, (double) (floats * sizeof (float)) / 1048576.0);
       return FALSE;
     }
@@ -105,7 +117,7 @@ ts_op_alloc_output (const TsParams *params,
         {
           error->status = TS_ERROR_OUT_OF_MEMORY;
           snprintf (error->message, sizeof error->message,
-                    "out of memory allocating the %zux%zu output (%.1f MiB)",
+                    _("out of memory allocating the %zux%zu output (%.1f MiB)"),
                     params->output_width, params->output_height, (double) bytes / 1048576.0);
         }
       return TS_ERROR_OUT_OF_MEMORY;

@@ -9,6 +9,29 @@
 
 #include "texsynth.h"
 
+/* Binds the "texsynth" text domain to LOCALEDIR, or to $TEXSYNTH_LOCALEDIR
+ * if set (tests use the catalogues of the build tree), in UTF-8. Must run
+ * before the op class is initialised: its title and property labels are
+ * translated then. */
+void ts_op_bind_textdomain (void);
+
+/* The module entry points gegl-op.h writes when GEGL_OP_BUNDLE is not
+ * defined, with the text domain bound first. Each op defines GEGL_OP_BUNDLE
+ * before including gegl-op.h, then writes TS_OP_MODULE (<its GEGL_OP_NAME>). */
+#define TS_OP_MODULE(op_name)                                           \
+  G_MODULE_EXPORT const GeglModuleInfo *                                \
+  gegl_module_query (GTypeModule *module G_GNUC_UNUSED)                 \
+  {                                                                     \
+    return &modinfo;                                                    \
+  }                                                                     \
+  G_MODULE_EXPORT gboolean                                              \
+  gegl_module_register (GTypeModule *module)                            \
+  {                                                                     \
+    ts_op_bind_textdomain ();                                           \
+    gegl_op_##op_name##_register_type (module);                         \
+    return TRUE;                                                        \
+  }
+
 /* The engine's pixel layout, exactly (see texsynth.h). */
 #define TS_OP_FORMAT "CIE Lab alpha float"
 
