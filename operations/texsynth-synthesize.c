@@ -41,8 +41,11 @@ property_boolean (tileable, _("Tileable"), FALSE)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wcast-function-type"
 #pragma GCC diagnostic ignored "-Wunused-parameter"
+#define GEGL_OP_BUNDLE /* TS_OP_MODULE: the module entry points bind the text domain */
 #include "gegl-op.h"
 #pragma GCC diagnostic pop
+
+TS_OP_MODULE (texsynth_synthesize)
 
 /* The output has the requested size at the origin, whatever the input's
  * size and position. */
