@@ -44,8 +44,11 @@ property_double (seam_width, _("Seam width"), 0.125)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wcast-function-type"
 #pragma GCC diagnostic ignored "-Wunused-parameter"
+#define GEGL_OP_BUNDLE /* TS_OP_MODULE: the module entry points bind the text domain */
 #include "gegl-op.h"
 #pragma GCC diagnostic pop
+
+TS_OP_MODULE (texsynth_tileable)
 
 /* The output covers exactly the input. */
 static GeglRectangle
@@ -109,7 +112,7 @@ process (GeglOperation       *operation,
         {
           status = TS_ERROR_OUT_OF_MEMORY;
           g_snprintf (error.message, sizeof error.message,
-                      "out of memory allocating the %zux%zu output", image.width, image.height);
+                      _("out of memory allocating the %zux%zu output"), image.width, image.height);
         }
     }
   if (status == TS_OK)
@@ -128,14 +131,15 @@ process (GeglOperation       *operation,
     {
       /* A filter that fails leaves the picture as it was (and says so),
        * rather than erasing it. */
-      g_warning ("%s: %s; the image is left unchanged", gegl_operation_get_name (operation),
+      /* TRANSLATORS: the operation's name, then what went wrong. */
+      g_warning (_("%s: %s; the image is left unchanged"), gegl_operation_get_name (operation),
                  error.message[0] ? error.message : ts_status_string (status));
       gegl_buffer_clear (output, roi);
       ts_op_write_output (output, roi, &image, box.x, box.y);
     }
   else
     ts_op_fail (operation, output, roi, error.message[0] ? error.message
-                                        : "the input is empty: there is nothing to make tileable");
+                                        : _("the input is empty: there is nothing to make tileable"));
 
   g_free (result.pixels);
   g_free (image.pixels);
