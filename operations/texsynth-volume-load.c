@@ -55,12 +55,15 @@ property_enum (layout, _("Layout"), TexsynthVolumeLoadLayout, texsynth_volume_lo
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wcast-function-type"
 #pragma GCC diagnostic ignored "-Wunused-parameter"
+#define GEGL_OP_BUNDLE /* TS_OP_MODULE: the module entry points bind the text domain */
 #include "gegl-op.h"
 #pragma GCC diagnostic pop
 
 #include "op-common.h"
 #include "volume-file.h"
 #include "volume-layout.h"
+
+TS_OP_MODULE (texsynth_volume_load)
 
 #include <errno.h>
 #include <string.h>
@@ -231,8 +234,8 @@ ensure_image (GeglOperation *operation, GeglProperties *o, LoadState *state)
   forget_image (state);
   if (o->layout == TEXSYNTH_VOLUME_LOAD_LAYOUT_SLICE && (size_t) o->index >= size)
     {
-      gchar *message = g_strdup_printf ("slice %d does not exist: '%s' is %zu voxels on each "
-                                        "side, so the index must be 0 to %zu",
+      gchar *message = g_strdup_printf (_("slice %d does not exist: '%s' is %zu voxels on each "
+                                          "side, so the index must be 0 to %zu"),
                                         o->index, o->path, size, size - 1);
       warn (operation, state, message);
       g_free (message);
@@ -245,7 +248,7 @@ ensure_image (GeglOperation *operation, GeglProperties *o, LoadState *state)
   slice = g_try_malloc (size * size * volume->channels);
   if (!state->image || !slice)
     {
-      gchar *message = g_strdup_printf ("out of memory showing '%s' (%.1f MiB)", o->path,
+      gchar *message = g_strdup_printf (_("out of memory showing '%s' (%.1f MiB)"), o->path,
                                         (double) stride * height / 1048576.0);
       g_free (slice);
       forget_image (state);
