@@ -14,6 +14,7 @@
 #include "volume-io.h"
 
 #include "schedule.h" /* ts_fail */
+#include "i18n.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -250,9 +251,11 @@ parse_header (TsInputFile *f, const uint8_t *header, ChannelOrder *order,
                         "has %llu", f->path, TS_DDS_DATA_OFFSET,
                         (unsigned long long) f->length);
       if (dimension != TS_DDS_DIMENSION_TEXTURE3D)
+        /* TRANSLATORS: the second %s is "1D", "2D" or the translation of
+         * "malformed", which describes the texture. */
         return ts_fail (error, TS_ERROR_BAD_FILE,
                         "'%s' is a %s DDS texture, not a volume (3D) texture", f->path,
-                        dimension == 2 ? "1D" : dimension == 3 ? "2D" : "malformed");
+                        dimension == 2 ? "1D" : dimension == 3 ? "2D" : TS_ ("malformed"));
       if (ts_get_le32 (header + DX10_MISC_FLAG) & DDS_RESOURCE_MISC_TEXTURECUBE)
         return ts_fail (error, TS_ERROR_BAD_FILE,
                         "'%s' is a DDS cube map, not a volume texture", f->path);
