@@ -251,9 +251,9 @@ parse_header (TsInputFile *f, const uint8_t *header, ChannelOrder *order,
                         "has %llu", f->path, TS_DDS_DATA_OFFSET,
                         (unsigned long long) f->length);
       if (dimension != TS_DDS_DIMENSION_TEXTURE3D)
-        /* TRANSLATORS: the second %s is "1D", "2D" or the translation of
-         * "malformed", which describes the texture. */
         return ts_fail (error, TS_ERROR_BAD_FILE,
+                        /* TRANSLATORS: the second %s is "1D", "2D" or the
+                         * translation of "malformed", describing the texture. */
                         "'%s' is a %s DDS texture, not a volume (3D) texture", f->path,
                         dimension == 2 ? "1D" : dimension == 3 ? "2D" : TS_ ("malformed"));
       if (ts_get_le32 (header + DX10_MISC_FLAG) & DDS_RESOURCE_MISC_TEXTURECUBE)
