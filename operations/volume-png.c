@@ -1,0 +1,180 @@
+/* A set of PNG files that appears all at once.
+ * SPDX-License-Identifier: LGPL-3.0-or-later
+ */
+#include "volume-png.h"
+
+#include <glib/gstdio.h>
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const guint8 png_signature[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
+static const guint8 png_end[12] = { 0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82 };
+
+static gboolean
+fail (TsError *error, TsStatus status, const gchar *format, ...) G_GNUC_PRINTF (3, 4);
+
+static gboolean
+fail (TsError *error, TsStatus status, const gchar *format, ...)
+{
+  va_list args;
+
+  error->status = status;
+  va_start (args, format);
+  vsnprintf (error->message, sizeof error->message, format, args);
+  va_end (args);
+  return FALSE;
+}
+
+void
+ts_png_set_init (TsPngSet *set)
+{
+  set->targets = g_ptr_array_new_with_free_func (g_free);
+  set->temps = g_ptr_array_new_with_free_func (g_free);
+}
+
+static void
+clear (TsPngSet *set)
+{
+  g_clear_pointer (&set->targets, g_ptr_array_unref);
+  g_clear_pointer (&set->temps, g_ptr_array_unref);
+}
+
+/* The mode a new file gets (g_mkstemp makes 0600 files): the old file's,
+ * or 0666 less the umask, read from /proc since umask() cannot be read
+ * without changing it for every thread. */
+static mode_t
+new_file_mode (const gchar *target)
+{
+  struct stat st;
+  mode_t mask = 022;
+  gchar *status = NULL;
+
+  if (g_stat (target, &st) == 0 && S_ISREG (st.st_mode))
+    return st.st_mode & 07777;
+  if (g_file_get_contents ("/proc/self/status", &status, NULL, NULL))
+    {
+      const gchar *line = strstr (status, "\nUmask:");
+      if (line)
+        mask = (mode_t) strtoul (line + 7, NULL, 8);
+      g_free (status);
+    }
+  return 0666 & ~mask;
+}
+
+/* gegl:png-save only warns on failure: check that the file holds the
+ * whole image (signature, size, end chunk) and make it durable. */
+static gboolean
+check_png (const gchar *path, const gchar *target, size_t width, size_t height, TsError *error)
+{
+  guint8 head[24], tail[12];
+  gboolean ok = FALSE;
+  int fd = g_open (path, O_RDONLY, 0);
+  off_t length;
+
+  if (fd < 0)
+    return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target, g_strerror (errno));
+  length = lseek (fd, 0, SEEK_END);
+  if (length >= (off_t) (sizeof head + sizeof tail) &&
+      pread (fd, head, sizeof head, 0) == (ssize_t) sizeof head &&
+      pread (fd, tail, sizeof tail, length - (off_t) sizeof tail) == (ssize_t) sizeof tail)
+    ok = memcmp (head, png_signature, sizeof png_signature) == 0 &&
+         memcmp (head + 12, "IHDR", 4) == 0 &&
+         ((size_t) head[16] << 24 | (size_t) head[17] << 16 | (size_t) head[18] << 8 | head[19]) == width &&
+         ((size_t) head[20] << 24 | (size_t) head[21] << 16 | (size_t) head[22] << 8 | head[23]) == height &&
+         memcmp (tail, png_end, sizeof png_end) == 0;
+  if (ok && (fchmod (fd, new_file_mode (target)) != 0 || fsync (fd) != 0))
+    {
+      int errnum = errno;
+      close (fd);
+      return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target, g_strerror (errnum));
+    }
+  close (fd);
+  if (!ok)
+    return fail (error, TS_ERROR_IO, "cannot write '%s': GEGL's png-save did not write the "
+                 "whole image (disk full?)", target);
+  return TRUE;
+}
+
+static void
+save_png (const gchar *path, GeglBuffer *buffer)
+{
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *source = gegl_node_new_child (graph, "operation", "gegl:buffer-source",
+                                          "buffer", buffer, NULL);
+  GeglNode *save = gegl_node_new_child (graph, "operation", "gegl:png-save",
+                                        "path", path, "bitdepth", 8, NULL);
+
+  gegl_node_link (source, save);
+  gegl_node_process (save);
+  g_object_unref (graph);
+}
+
+gboolean
+ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
+                size_t width, size_t height, gboolean opaque, TsError *error)
+{
+  GeglRectangle rect = { 0, 0, (gint) width, (gint) height };
+  gchar *temp = g_strconcat (target, ".tmp-XXXXXX", NULL);
+  GeglBuffer *buffer;
+  int fd;
+
+  if (!gegl_has_operation ("gegl:png-save"))
+    {
+      g_free (temp);
+      return fail (error, TS_ERROR_IO, "GEGL's gegl:png-save operation is not available "
+                   "(check GEGL_PATH)");
+    }
+  /* Reserve a unique name; png-save then replaces the empty file. */
+  fd = g_mkstemp (temp);
+  if (fd < 0)
+    {
+      int errnum = errno;
+      g_free (temp);
+      return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target, g_strerror (errnum));
+    }
+  close (fd);
+  g_ptr_array_add (set->targets, g_strdup (target));
+  g_ptr_array_add (set->temps, temp);
+
+  /* An RGB buffer makes png-save write an RGB file. */
+  buffer = gegl_buffer_new (&rect, babl_format (opaque ? "R'G'B' u8" : "R'G'B'A u8"));
+  gegl_buffer_set (buffer, &rect, 0, babl_format ("R'G'B'A u8"), rgba, (gint) width * 4);
+  save_png (temp, buffer);
+  g_object_unref (buffer);
+  return check_png (temp, target, width, height, error);
+}
+
+gboolean
+ts_png_set_commit (TsPngSet *set, TsError *error)
+{
+  for (guint i = 0; i < set->temps->len; i++)
+    {
+      const gchar *target = g_ptr_array_index (set->targets, i);
+      if (g_rename (g_ptr_array_index (set->temps, i), target) != 0)
+        {
+          int errnum = errno;
+          /* Earlier files are already in place; drop only the rest. */
+          g_ptr_array_remove_range (set->temps, 0, i);
+          ts_png_set_abort (set);
+          return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target,
+                       g_strerror (errnum));
+        }
+    }
+  clear (set);
+  return TRUE;
+}
+
+void
+ts_png_set_abort (TsPngSet *set)
+{
+  if (set->temps)
+    for (guint i = 0; i < set->temps->len; i++)
+      g_unlink (g_ptr_array_index (set->temps, i));
+  clear (set);
+}
