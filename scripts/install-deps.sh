@@ -8,15 +8,23 @@ packages=(
   libgegl-dev libbabl-dev libglib2.0-dev        # engine tools and GEGL operations
   gegl                                          # the gegl command-line tool
   python3 python3-gi gir1.2-gegl-0.4            # op tests from Python (GObject introspection)
+  gettext locales                               # translations (po/) and their tests' locales
 )
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+sudo=()
+[ "$(id -u)" -eq 0 ] || sudo=(sudo)
+if [ ${#missing[@]} -gt 0 ]; then
+  apt=("${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get)
+  "${apt[@]}" update
+  "${apt[@]}" install -y --no-install-recommends "${missing[@]}"
+fi
 
-apt=(env DEBIAN_FRONTEND=noninteractive apt-get)
-[ "$(id -u)" -eq 0 ] || apt=(sudo "${apt[@]}")
-"${apt[@]}" update
-"${apt[@]}" install -y --no-install-recommends "${missing[@]}"
+# tests/i18n shows the ops in these languages; a clean Debian has no locales.
+for lang in et_EE es_ES fi_FI hr_HR zh_CN; do
+  locale -a 2>/dev/null | grep -qix "$lang\.utf-\?8" ||
+    "${sudo[@]}" localedef -i "$lang" -f UTF-8 "$lang.UTF-8"
+done
