@@ -9,6 +9,8 @@
  */
 #include <gegl-plugin.h>
 
+#include "op-common.h" /* ts_op_bind_textdomain */
+
 void gegl_op_texsynth_volume_slice_register_type (GTypeModule *module);
 void gegl_op_texsynth_volume_save_register_type (GTypeModule *module);
 
@@ -26,6 +28,8 @@ gegl_module_query (GTypeModule *module G_GNUC_UNUSED)
 G_MODULE_EXPORT gboolean
 gegl_module_register (GTypeModule *module)
 {
+  /* Before the classes are set up: their labels are translated then. */
+  ts_op_bind_textdomain ();
   gegl_op_texsynth_volume_slice_register_type (module);
   gegl_op_texsynth_volume_save_register_type (module);
   return TRUE;
