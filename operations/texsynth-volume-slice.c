@@ -141,8 +141,8 @@ slice_index (GeglProperties *o, size_t *index, TsError *error)
     }
   error->status = TS_ERROR_BAD_PARAMETER;
   snprintf (error->message, sizeof error->message,
-            "slice %d does not exist: the volume is %d voxels on each side, so the "
-            "index must be 0 to %d (or -1 for the middle slice)",
+            _("slice %d does not exist: the volume is %d voxels on each side, so the "
+              "index must be 0 to %d (or -1 for the middle slice)"),
             o->index, o->size, o->size - 1);
   return FALSE;
 }
@@ -167,7 +167,7 @@ write_slices (GeglProperties *o, const TsVolumeEntry *entry, size_t index,
   if (!slice.pixels)
     {
       error->status = TS_ERROR_OUT_OF_MEMORY;
-      snprintf (error->message, sizeof error->message, "out of memory for a %zux%zu slice",
+      snprintf (error->message, sizeof error->message, _("out of memory for a %zux%zu slice"),
                 size, size);
       return FALSE;
     }
