@@ -135,7 +135,7 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
 
   memset (target, 0, sizeof *target);
   if (!path || !path[0])
-    return set_error (error, "no file name given: set 'path'");
+    return set_error (error, _("no file name given: set 'path'"));
   target->format = o->format;
   if (target->format == TEXSYNTH_VOLUME_SAVE_FORMAT_AUTO)
     {
@@ -148,9 +148,9 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
       else if (has_suffix (path, ".png"))
         target->format = TEXSYNTH_VOLUME_SAVE_FORMAT_ATLAS;
       else
-        return set_error (error, "cannot tell the format of '%s' from its name: end it with "
-                          ".vol, .dds or .png (an atlas), or with '/' for a folder of PNG "
-                          "slices, or set 'format'", path);
+        return set_error (error, _("cannot tell the format of '%s' from its name: end it with "
+                            ".vol, .dds or .png (an atlas), or with '/' for a folder of PNG "
+                            "slices, or set 'format'"), path);
     }
 
   if (target->format == TEXSYNTH_VOLUME_SAVE_FORMAT_PNG_SLICES)
@@ -170,7 +170,7 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
         }
     }
   else if (folder)
-    return set_error (error, "'%s' is a folder: give a file name, or use format=png-slices",
+    return set_error (error, _("'%s' is a folder: give a file name, or use format=png-slices"),
                       path);
   else
     {
@@ -181,14 +181,15 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
   if (!g_file_test (target->folder, G_FILE_TEST_IS_DIR))
     {
       gboolean missing = !g_file_test (target->folder, G_FILE_TEST_EXISTS);
-      set_error (error, missing ? "the folder '%s' does not exist" : "'%s' is not a folder",
+      set_error (error,
+                 missing ? _("the folder '%s' does not exist") : _("'%s' is not a folder"),
                  target->folder);
       target_clear (target);
       return FALSE;
     }
   if (access (target->folder, W_OK) != 0)
     {
-      set_error (error, "cannot write in the folder '%s': %s", target->folder,
+      set_error (error, _("cannot write in the folder '%s': %s"), target->folder,
                  g_strerror (errno));
       target_clear (target);
       return FALSE;
@@ -209,7 +210,7 @@ to_rgba8 (const TsVolumeEntry *entry, gboolean *opaque, TsError *error)
     {
       error->status = TS_ERROR_OUT_OF_MEMORY;
       snprintf (error->message, sizeof error->message,
-                "out of memory converting the %zu^3 volume to 8 bits (%.1f MiB)", size,
+                _("out of memory converting the %zu^3 volume to 8 bits (%.1f MiB)"), size,
                 (double) (plane * size * 4) / 1048576.0);
       return NULL;
     }
@@ -273,7 +274,7 @@ write_pngs (GeglOperation *operation, GeglProperties *o, const Target *target,
   if (!image)
     {
       error->status = TS_ERROR_OUT_OF_MEMORY;
-      snprintf (error->message, sizeof error->message, "out of memory for a %zux%zu image",
+      snprintf (error->message, sizeof error->message, _("out of memory for a %zux%zu image"),
                 width, height);
       return FALSE;
     }
@@ -370,10 +371,10 @@ static void
 attach (GeglOperation *operation)
 {
   GEGL_OPERATION_CLASS (gegl_op_parent_class)->attach (operation);
-  add_input_pad (operation, "aux", "X exemplar",
-                 "Exemplar of the slices across x (default: the input)");
-  add_input_pad (operation, "aux2", "Y exemplar",
-                 "Exemplar of the slices across y (default: the input)");
+  add_input_pad (operation, "aux", _("X exemplar"),
+                 _("Exemplar of the slices across x (default: the input)"));
+  add_input_pad (operation, "aux2", _("Y exemplar"),
+                 _("Exemplar of the slices across y (default: the input)"));
 }
 
 static void
