@@ -3,6 +3,7 @@
  */
 #include "volume-op-common.h"
 
+#include <glib/gi18n-lib.h>
 #include <stdio.h>
 
 static const gchar *const pad_names[3] = { "input", "aux", "aux2" };
@@ -57,8 +58,8 @@ read_pad (GeglOperation *operation, const gchar *pad, GeglBuffer *buffer, TsImag
     {
       error->status = TS_ERROR_BAD_PARAMETER;
       snprintf (error->message, sizeof error->message,
-                "the exemplar on the '%s' pad is unbounded or larger than %dx%d pixels; "
-                "crop it", pad, TS_MAX_OUTPUT_SIDE, TS_MAX_OUTPUT_SIDE);
+                _("the exemplar on the '%s' pad is unbounded or larger than %dx%d pixels; "
+                  "crop it"), pad, TS_MAX_OUTPUT_SIDE, TS_MAX_OUTPUT_SIDE);
       return FALSE;
     }
   bytes = (gsize) rect.width * (gsize) rect.height * TS_CHANNELS * sizeof (float);
@@ -67,7 +68,7 @@ read_pad (GeglOperation *operation, const gchar *pad, GeglBuffer *buffer, TsImag
     {
       error->status = TS_ERROR_OUT_OF_MEMORY;
       snprintf (error->message, sizeof error->message,
-                "out of memory reading the %dx%d exemplar on the '%s' pad (%.1f MiB)",
+                _("out of memory reading the %dx%d exemplar on the '%s' pad (%.1f MiB)"),
                 rect.width, rect.height, pad, (double) bytes / 1048576.0);
       return FALSE;
     }
