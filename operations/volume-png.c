@@ -3,6 +3,7 @@
  */
 #include "volume-png.h"
 
+#include <glib/gi18n-lib.h>
 #include <glib/gstdio.h>
 
 #include <errno.h>
@@ -78,7 +79,7 @@ check_png (const gchar *path, const gchar *target, size_t width, size_t height, 
   off_t length;
 
   if (fd < 0)
-    return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target, g_strerror (errno));
+    return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target, g_strerror (errno));
   length = lseek (fd, 0, SEEK_END);
   if (length >= (off_t) (sizeof head + sizeof tail) &&
       pread (fd, head, sizeof head, 0) == (ssize_t) sizeof head &&
@@ -92,12 +93,12 @@ check_png (const gchar *path, const gchar *target, size_t width, size_t height, 
     {
       int errnum = errno;
       close (fd);
-      return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target, g_strerror (errnum));
+      return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target, g_strerror (errnum));
     }
   close (fd);
   if (!ok)
-    return fail (error, TS_ERROR_IO, "cannot write '%s': GEGL's png-save did not write the "
-                 "whole image (disk full?)", target);
+    return fail (error, TS_ERROR_IO, _("cannot write '%s': GEGL's png-save did not write the "
+                   "whole image (disk full?)"), target);
   return TRUE;
 }
 
@@ -127,8 +128,8 @@ ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
   if (!gegl_has_operation ("gegl:png-save"))
     {
       g_free (temp);
-      return fail (error, TS_ERROR_IO, "GEGL's gegl:png-save operation is not available "
-                   "(check GEGL_PATH)");
+      return fail (error, TS_ERROR_IO, _("GEGL's gegl:png-save operation is not available "
+                     "(check GEGL_PATH)"));
     }
   /* Reserve a unique name; png-save then replaces the empty file. */
   fd = g_mkstemp (temp);
@@ -136,7 +137,7 @@ ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
     {
       int errnum = errno;
       g_free (temp);
-      return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target, g_strerror (errnum));
+      return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target, g_strerror (errnum));
     }
   close (fd);
   g_ptr_array_add (set->targets, g_strdup (target));
@@ -162,7 +163,7 @@ ts_png_set_commit (TsPngSet *set, TsError *error)
           /* Earlier files are already in place; drop only the rest. */
           g_ptr_array_remove_range (set->temps, 0, i);
           ts_png_set_abort (set);
-          return fail (error, TS_ERROR_IO, "cannot write '%s': %s", target,
+          return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target,
                        g_strerror (errnum));
         }
     }
