@@ -9,6 +9,8 @@ packages=(
   gegl                                          # the gegl command-line tool
   python3 python3-gi gir1.2-gegl-0.4            # op tests from Python (GObject introspection)
   gettext locales                               # translations (po/) and their tests' locales
+  clang libclang-rt-14-dev libomp-14-dev valgrind  # scripts/sanitize.sh, fuzz/run.sh: libFuzzer,
+                                                #   TSan with LLVM libomp + Archer, memcheck
 )
 
 missing=()

