@@ -28,7 +28,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import tsops  # noqa: E402
 
 SKIP = 77
-OPS = ["texsynth:synthesize", "texsynth:tileable", "texsynth:volume-load"]
+OPS = ["texsynth:synthesize", "texsynth:tileable", "texsynth:volume-load",
+       "texsynth:volume-slice", "texsynth:volume-save"]
 LOCALES = {"et": "et_EE", "es": "es_ES", "fi": "fi_FI", "hr": "hr_HR", "zh_CN": "zh_CN"}
 
 
