@@ -1,0 +1,210 @@
+/* GIMP 2.10's dialogs: GTK2 through libgimpui-2.0, as GIMP 2.10 needs.
+ * Labels, tooltips and ranges come from the shared argument table.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+/* GTK2 and GIMP 2.10's libgimpui use GLib API that GLib has deprecated
+ * since; they are what GIMP 2.10 needs, so their warnings are noise. */
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+
+#include "dialogs-gimp2.h"
+
+#include <libgimp/gimpui.h>
+#include <glib/gi18n-lib.h>
+
+typedef struct
+{
+  GtkWidget *dialog;
+  GtkWidget *table;
+  gint       rows;
+} Form;
+
+static void
+form_begin (Form *form, const gchar *title, const gchar *help_id)
+{
+  GtkWidget *vbox;
+
+  gimp_ui_init (TS_PLUGIN_BINARY, FALSE);
+  form->dialog = gimp_dialog_new (title, TS_PLUGIN_BINARY, NULL, 0,
+                                  gimp_standard_help_func, help_id,
+                                  _("_Cancel"), GTK_RESPONSE_CANCEL,
+                                  _("_OK"), GTK_RESPONSE_OK,
+                                  NULL);
+  gtk_dialog_set_alternative_button_order (GTK_DIALOG (form->dialog),
+                                           GTK_RESPONSE_OK, GTK_RESPONSE_CANCEL, -1);
+  gimp_window_set_transient (GTK_WINDOW (form->dialog));
+
+  vbox = gtk_vbox_new (FALSE, 12);
+  gtk_container_set_border_width (GTK_CONTAINER (vbox), 12);
+  gtk_box_pack_start (GTK_BOX (gtk_dialog_get_content_area (GTK_DIALOG (form->dialog))),
+                      vbox, TRUE, TRUE, 0);
+  form->table = gtk_table_new (1, 3, FALSE);
+  gtk_table_set_col_spacings (GTK_TABLE (form->table), 6);
+  gtk_table_set_row_spacings (GTK_TABLE (form->table), 6);
+  gtk_box_pack_start (GTK_BOX (vbox), form->table, FALSE, FALSE, 0);
+  form->rows = 0;
+}
+
+static gchar *
+label_text (const gchar *name)
+{
+  return g_strdup_printf ("%s:", ts_arg_label (name));
+}
+
+/* A slider with a spin button; `soft_max` bounds the slider only. */
+static void
+form_int (Form *form, const gchar *name, gint *value, gint min, gint max, gint soft_max)
+{
+  gchar *label = label_text (name);
+  GtkObject *adjustment;
+
+  adjustment = gimp_scale_entry_new (GTK_TABLE (form->table), 0, form->rows++, label, 200, 6,
+                                     *value, min, MIN (max, soft_max), 1, 10, 0,
+                                     soft_max >= max, min, max, ts_arg_tooltip (name), NULL);
+  g_signal_connect (adjustment, "value-changed", G_CALLBACK (gimp_int_adjustment_update), value);
+  g_free (label);
+}
+
+static void
+form_toggle (Form *form, const gchar *name, gboolean *value)
+{
+  GtkWidget *toggle = gtk_check_button_new_with_label (ts_arg_label (name));
+
+  gtk_toggle_button_set_active (GTK_TOGGLE_BUTTON (toggle), *value);
+  gimp_help_set_help_data (toggle, ts_arg_tooltip (name), NULL);
+  gtk_table_attach (GTK_TABLE (form->table), toggle, 0, 3, form->rows, form->rows + 1,
+                    GTK_FILL, GTK_FILL, 0, 0);
+  form->rows++;
+  g_signal_connect (toggle, "toggled", G_CALLBACK (gimp_toggle_button_update), value);
+}
+
+/* The seed: a spin button and GIMP's "New Seed" button. */
+static void
+form_seed (Form *form, guint32 *seed, gboolean *randomize)
+{
+  gchar *label = label_text ("seed");
+  GtkWidget *widget = gimp_random_seed_new (seed, randomize);
+
+  /* The seed is chosen anew for each interactive run anyway. */
+  gtk_widget_set_no_show_all (GIMP_RANDOM_SEED_TOGGLE (widget), TRUE);
+  gtk_widget_hide (GIMP_RANDOM_SEED_TOGGLE (widget));
+  gimp_help_set_help_data (GIMP_RANDOM_SEED_SPINBUTTON (widget), ts_arg_tooltip ("seed"), NULL);
+  gimp_table_attach_aligned (GTK_TABLE (form->table), 0, form->rows++, label, 0.0, 0.5,
+                             widget, 2, TRUE);
+  g_free (label);
+}
+
+static gboolean
+form_run (Form *form)
+{
+  gboolean ok;
+
+  gtk_widget_show_all (form->dialog);
+  ok = gimp_dialog_run (GIMP_DIALOG (form->dialog)) == GTK_RESPONSE_OK;
+  gtk_widget_destroy (form->dialog);
+  return ok;
+}
+
+gboolean
+ts_render_dialog2 (TsRenderArgs *args)
+{
+  Form form;
+  guint32 seed = (guint32) args->seed;
+  gboolean randomize = FALSE, ok;
+
+  form_begin (&form, _("Texture Synthesis"), TS_PROC_RENDER);
+  form_int (&form, "width", &args->width, 1, TS_PLUGIN_MAX_SIDE, 4096);
+  form_int (&form, "height", &args->height, 1, TS_PLUGIN_MAX_SIDE, 4096);
+  form_toggle (&form, "tileable", &args->tileable);
+  form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
+            TS_PLUGIN_MAX_QUALITY);
+  form_seed (&form, &seed, &randomize);
+  ok = form_run (&form);
+  args->seed = (gint) (seed & G_MAXINT);
+  return ok;
+}
+
+gboolean
+ts_tileable_dialog2 (TsTileableArgs *args)
+{
+  Form form;
+  guint32 seed = (guint32) args->seed;
+  gboolean randomize = FALSE, ok;
+
+  form_begin (&form, _("Make Seamless by Synthesis"), TS_PROC_TILEABLE);
+  form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
+            TS_PLUGIN_MAX_QUALITY);
+  form_seed (&form, &seed, &randomize);
+  ok = form_run (&form);
+  args->seed = (gint) (seed & G_MAXINT);
+  return ok;
+}
+
+/* --- the volume file ---------------------------------------------------- */
+
+static void
+on_browse (GtkWidget *button G_GNUC_UNUSED, GtkEntry *entry)
+{
+  GtkWidget *chooser = gtk_file_chooser_dialog_new (_("Save the Volume As"),
+                                                    NULL, GTK_FILE_CHOOSER_ACTION_SAVE,
+                                                    _("_Cancel"), GTK_RESPONSE_CANCEL,
+                                                    _("_Save"), GTK_RESPONSE_ACCEPT,
+                                                    NULL);
+
+  gtk_file_chooser_set_do_overwrite_confirmation (GTK_FILE_CHOOSER (chooser), TRUE);
+  gtk_file_chooser_set_filename (GTK_FILE_CHOOSER (chooser), gtk_entry_get_text (entry));
+  if (gtk_dialog_run (GTK_DIALOG (chooser)) == GTK_RESPONSE_ACCEPT)
+    {
+      gchar *path = gtk_file_chooser_get_filename (GTK_FILE_CHOOSER (chooser));
+
+      if (path)
+        gtk_entry_set_text (entry, path);
+      g_free (path);
+    }
+  gtk_widget_destroy (chooser);
+}
+
+static void
+form_path (Form *form, gchar *path, gsize size, GtkWidget **entry_out)
+{
+  gchar *label = label_text ("path");
+  GtkWidget *hbox = gtk_hbox_new (FALSE, 6);
+  GtkWidget *entry = gtk_entry_new ();
+  GtkWidget *browse = gtk_button_new_with_mnemonic (_("_Browse\342\200\246"));
+
+  gtk_entry_set_max_length (GTK_ENTRY (entry), (gint) size - 1);
+  gtk_entry_set_text (GTK_ENTRY (entry), path);
+  gtk_entry_set_width_chars (GTK_ENTRY (entry), 36);
+  gimp_help_set_help_data (entry, ts_arg_tooltip ("path"), NULL);
+  gtk_box_pack_start (GTK_BOX (hbox), entry, TRUE, TRUE, 0);
+  gtk_box_pack_start (GTK_BOX (hbox), browse, FALSE, FALSE, 0);
+  g_signal_connect (browse, "clicked", G_CALLBACK (on_browse), entry);
+  gimp_table_attach_aligned (GTK_TABLE (form->table), 0, form->rows++, label, 0.0, 0.5,
+                             hbox, 2, FALSE);
+  *entry_out = entry;
+  g_free (label);
+}
+
+gboolean
+ts_solid_dialog2 (TsSolidArgs *args)
+{
+  Form form;
+  guint32 seed = (guint32) args->seed;
+  gboolean randomize = FALSE, ok;
+  GtkWidget *entry;
+
+  form_begin (&form, _("Solid Texture"), TS_PROC_SOLID);
+  form_int (&form, "size", &args->size, TS_PLUGIN_MIN_SOLID, TS_PLUGIN_MAX_SOLID,
+            TS_PLUGIN_MAX_SOLID);
+  form_path (&form, args->path, sizeof args->path, &entry);
+  form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
+            TS_PLUGIN_MAX_QUALITY);
+  form_seed (&form, &seed, &randomize);
+
+  gtk_widget_show_all (form.dialog);
+  ok = gimp_dialog_run (GIMP_DIALOG (form.dialog)) == GTK_RESPONSE_OK;
+  if (ok)
+    g_strlcpy (args->path, gtk_entry_get_text (GTK_ENTRY (entry)), sizeof args->path);
+  gtk_widget_destroy (form.dialog);
+  args->seed = (gint) (seed & G_MAXINT);
+  return ok;
+}

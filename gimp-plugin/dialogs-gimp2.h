@@ -1,0 +1,14 @@
+/* GIMP 2.10's dialogs (GTK2, libgimpui-2.0). Each returns TRUE on OK,
+ * with the arguments as the user left them.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#ifndef TEXSYNTH_DIALOGS_GIMP2_H
+#define TEXSYNTH_DIALOGS_GIMP2_H
+
+#include "texsynth-plugin.h"
+
+gboolean ts_render_dialog2   (TsRenderArgs *args);
+gboolean ts_tileable_dialog2 (TsTileableArgs *args);
+gboolean ts_solid_dialog2    (TsSolidArgs *args);
+
+#endif /* TEXSYNTH_DIALOGS_GIMP2_H */

@@ -1,0 +1,218 @@
+/* Argument defaults and checks, seeds, gettext and op availability: the
+ * parts of the procedures' logic that GIMP 2.10 and GIMP 3 share.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <stdarg.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <glib/gi18n-lib.h>
+#include <glib/gstdio.h>
+
+#include "texsynth-plugin.h"
+
+G_DEFINE_QUARK (texsynth-plugin-error-quark, ts_plugin_error)
+
+void
+ts_render_args_init (TsRenderArgs *args)
+{
+  memset (args, 0, sizeof *args);
+  args->quality = TS_PLUGIN_DEFAULT_QUALITY;
+}
+
+void
+ts_tileable_args_init (TsTileableArgs *args)
+{
+  memset (args, 0, sizeof *args);
+  args->quality = TS_PLUGIN_DEFAULT_QUALITY;
+}
+
+void
+ts_solid_args_init (TsSolidArgs *args)
+{
+  gchar *path = g_build_filename (g_get_home_dir (), "solid-texture.vol", NULL);
+
+  memset (args, 0, sizeof *args);
+  args->size = TS_PLUGIN_DEFAULT_SOLID;
+  args->quality = TS_PLUGIN_DEFAULT_QUALITY;
+  g_strlcpy (args->path, path, sizeof args->path);
+  g_free (path);
+}
+
+static gchar *
+check_quality_and_seed (gint quality, gint seed)
+{
+  if (quality < TS_PLUGIN_MIN_QUALITY || quality > TS_PLUGIN_MAX_QUALITY)
+    return g_strdup_printf (_("Quality must be between %d and %d (got %d)."),
+                            TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY, quality);
+  if (seed < 0)
+    return g_strdup_printf (_("The seed must be 0 or more (got %d)."), seed);
+  return NULL;
+}
+
+gchar *
+ts_render_args_check (const TsRenderArgs *args)
+{
+  if (args->width < 1 || args->width > TS_PLUGIN_MAX_SIDE)
+    return g_strdup_printf (_("The width must be between 1 and %d pixels (got %d)."),
+                            TS_PLUGIN_MAX_SIDE, args->width);
+  if (args->height < 1 || args->height > TS_PLUGIN_MAX_SIDE)
+    return g_strdup_printf (_("The height must be between 1 and %d pixels (got %d)."),
+                            TS_PLUGIN_MAX_SIDE, args->height);
+  return check_quality_and_seed (args->quality, args->seed);
+}
+
+gchar *
+ts_tileable_args_check (const TsTileableArgs *args, gint width, gint height)
+{
+  /* The op's own lower limit (TS_TILEABLE_MIN_SIDE): below it, it would
+   * leave the layer unchanged with only a warning on the console. */
+  if (width < 8 || height < 8)
+    return g_strdup_printf (_("The layer is %d\303\227%d pixels: it must be at least 8\303\2278 "
+                              "to be made seamless."), width, height);
+  return check_quality_and_seed (args->quality, args->seed);
+}
+
+/* The formats texsynth:volume-save infers from a file name. */
+static gboolean
+has_volume_extension (const gchar *path)
+{
+  static const gchar *const extensions[] = { ".vol", ".dds", ".png" };
+  gchar *lower = g_ascii_strdown (path, -1);
+  gboolean found = FALSE;
+
+  for (gsize i = 0; i < G_N_ELEMENTS (extensions); i++)
+    found = found || g_str_has_suffix (lower, extensions[i]);
+  g_free (lower);
+  return found;
+}
+
+gchar *
+ts_solid_args_check (const TsSolidArgs *args, gint n_exemplars)
+{
+  gchar *message, *folder;
+
+  if (args->size < TS_PLUGIN_MIN_SOLID || args->size > TS_PLUGIN_MAX_SOLID)
+    return g_strdup_printf (_("The size must be between %d and %d voxels (got %d)."),
+                            TS_PLUGIN_MIN_SOLID, TS_PLUGIN_MAX_SOLID, args->size);
+  if (n_exemplars < 1 || n_exemplars > 3)
+    return g_strdup_printf (_("Select one to three layers as exemplars (got %d)."),
+                            n_exemplars);
+  if ((message = check_quality_and_seed (args->quality, args->seed)))
+    return message;
+  if (!args->path[0] || strnlen (args->path, sizeof args->path) >= sizeof args->path)
+    return g_strdup (_("The path of the volume file is empty or too long."));
+  if (!has_volume_extension (args->path))
+    return g_strdup_printf (_("Cannot tell the volume format from \"%s\": the file name must "
+                              "end in .vol, .dds or .png."), args->path);
+  if (g_file_test (args->path, G_FILE_TEST_IS_DIR))
+    return g_strdup_printf (_("\"%s\" is a folder: give a file name."), args->path);
+
+  folder = g_path_get_dirname (args->path);
+  if (!g_file_test (folder, G_FILE_TEST_IS_DIR))
+    message = g_strdup_printf (_("Cannot write \"%s\": the folder \"%s\" does not exist."),
+                               args->path, folder);
+  else if (g_access (folder, W_OK) != 0)
+    message = g_strdup_printf (_("Cannot write \"%s\": the folder \"%s\" is not writable."),
+                               args->path, folder);
+  else if (g_file_test (args->path, G_FILE_TEST_EXISTS) && g_access (args->path, W_OK) != 0)
+    message = g_strdup_printf (_("Cannot write \"%s\": the file is not writable."), args->path);
+  else
+    message = NULL;
+  g_free (folder);
+  return message;
+}
+
+static const struct
+{
+  const gchar *name;
+  const gchar *label;
+  const gchar *tooltip;
+} arg_texts[] =
+{
+  { "width", N_("Width"), N_("Width of the synthesised texture") },
+  { "height", N_("Height"), N_("Height of the synthesised texture") },
+  { "tileable", N_("Tileable"),
+    N_("Make the result tile seamlessly: its left edge continues its right edge "
+       "and its top edge its bottom edge") },
+  { "quality", N_("Quality"),
+    N_("Candidates compared per pixel (k = quality + 1): higher searches more and "
+       "is slower; 2 measured best on average") },
+  { "seed", N_("Random seed"),
+    N_("The same seed with the same settings gives the same result, whatever the "
+       "number of threads; change it for another variation") },
+  { "size", N_("Size"),
+    N_("Edge of the cube in voxels: the volume has size Ã size Ã size voxels") },
+  { "path", N_("File"),
+    N_("Where to write the volume; the name's ending chooses the format: .vol "
+       "(raw floats), .dds (volume texture) or .png (slices)") },
+};
+
+static gsize
+arg_index (const gchar *name)
+{
+  gsize i;
+
+  for (i = 0; i < G_N_ELEMENTS (arg_texts); i++)
+    if (g_str_equal (arg_texts[i].name, name))
+      break;
+  return i;
+}
+
+const gchar *
+ts_arg_label (const gchar *name)
+{
+  gsize i = arg_index (name);
+
+  return i < G_N_ELEMENTS (arg_texts) ? _(arg_texts[i].label) : NULL;
+}
+
+const gchar *
+ts_arg_tooltip (const gchar *name)
+{
+  gsize i = arg_index (name);
+
+  return i < G_N_ELEMENTS (arg_texts) ? _(arg_texts[i].tooltip) : NULL;
+}
+
+gint
+ts_plugin_random_seed (void)
+{
+  return g_random_int_range (0, G_MAXINT);
+}
+
+void
+ts_plugin_init_i18n (void)
+{
+  bindtextdomain (GETTEXT_PACKAGE, LOCALEDIR);
+  bind_textdomain_codeset (GETTEXT_PACKAGE, "UTF-8");
+}
+
+gchar *
+ts_plugin_check_ops (const gchar *first_op, ...)
+{
+  GString *missing = g_string_new (NULL);
+  const gchar *op;
+  gchar *names, *message;
+  va_list ops;
+
+  va_start (ops, first_op);
+  for (op = first_op; op; op = va_arg (ops, const gchar *))
+    if (!gegl_has_operation (op))
+      g_string_append_printf (missing, "%s%s", missing->len ? ", " : "", op);
+  va_end (ops);
+
+  if (!missing->len)
+    {
+      g_string_free (missing, TRUE);
+      return NULL;
+    }
+  op = g_getenv ("GEGL_PATH");
+  names = g_string_free (missing, FALSE);
+  message = g_strdup_printf (_("GEGL cannot find the operation(s) %s (GEGL_PATH=%s): install "
+                               "texsynth's operations into GEGL's plug-in folder or "
+                               "~/.local/share/gegl-0.4/plug-ins."),
+                             names, op ? op : _("unset"));
+  g_free (names);
+  return message;
+}

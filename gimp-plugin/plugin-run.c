@@ -1,0 +1,335 @@
+/* Running the texsynth GEGL ops for the plug-in: graphs on private copies
+ * of GIMP's pixels, processed in a worker thread while the main thread
+ * relays progress to GIMP (libgimp's wire is not thread-safe, and a GIMP
+ * buffer reads its tiles over it, so only the main thread talks to GIMP).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <string.h>
+
+#include <glib/gi18n-lib.h>
+#include <glib/gstdio.h>
+
+#include "texsynth-plugin.h"
+
+/* How often the main thread passes the op's progress on to GIMP. */
+#define PROGRESS_POLL_US 50000
+
+/* Rows moved per step by ts_plugin_transfer: bounds its memory. */
+#define TRANSFER_ROWS 64
+
+gboolean
+ts_plugin_transfer (GeglBuffer          *source,
+                    const GeglRectangle *source_rect,
+                    GeglBuffer          *target,
+                    gint                 target_x,
+                    gint                 target_y,
+                    const Babl          *format)
+{
+  gsize stride = (gsize) source_rect->width * babl_format_get_bytes_per_pixel (format);
+  guchar *rows = g_try_malloc (stride * TRANSFER_ROWS);
+
+  if (!rows)
+    return FALSE;
+  /* gegl_buffer_copy may split the work over GEGL's threads, but a GIMP
+   * buffer fetches its tiles over libgimp's wire, which is not
+   * thread-safe: plain get and set run in this thread only. */
+  for (gint y = 0; y < source_rect->height; y += TRANSFER_ROWS)
+    {
+      gint n = MIN (TRANSFER_ROWS, source_rect->height - y);
+      GeglRectangle from = { source_rect->x, source_rect->y + y, source_rect->width, n };
+      GeglRectangle to = { target_x, target_y + y, source_rect->width, n };
+
+      gegl_buffer_get (source, &from, 1.0, format, rows, (gint) stride, GEGL_ABYSS_NONE);
+      gegl_buffer_set (target, &to, 0, format, rows, (gint) stride);
+    }
+  g_free (rows);
+  return TRUE;
+}
+
+GeglBuffer *
+ts_plugin_copy_buffer (GeglBuffer          *source,
+                       const GeglRectangle *rect,
+                       const Babl          *format)
+{
+  GeglRectangle target = { 0, 0, rect->width, rect->height };
+  GeglBuffer *copy = gegl_buffer_new (&target, format);
+
+  if (!ts_plugin_transfer (source, rect, copy, 0, 0, format))
+    g_clear_object (&copy);
+  return copy;
+}
+
+void
+ts_exemplar_clear (TsExemplar *exemplar)
+{
+  g_clear_object (&exemplar->buffer);
+  g_clear_object (&exemplar->profile);
+}
+
+const Babl *
+ts_exemplar_layer_format (const TsExemplar *exemplar, const Babl *space)
+{
+  /* Float keeps every precision's values; GIMP converts on copy. */
+  const gchar *name = exemplar->base_type == GIMP_GRAY
+                      ? (exemplar->has_alpha ? "Y'A float" : "Y' float")
+                      : (exemplar->has_alpha ? "R'G'B'A float" : "R'G'B' float");
+
+  return babl_format_with_space (name, space);
+}
+
+/* --- the worker thread ------------------------------------------------- */
+
+typedef struct
+{
+  GeglNode *sink;
+  gint      permille;  /* atomic: the watched node's progress */
+  gint      done;      /* atomic */
+} Job;
+
+static void
+on_progress (GeglNode *node G_GNUC_UNUSED, gdouble fraction, gchar *text G_GNUC_UNUSED,
+             gpointer data)
+{
+  Job *job = data;
+
+  g_atomic_int_set (&job->permille, (gint) (CLAMP (fraction, 0.0, 1.0) * 1000.0));
+}
+
+static gpointer
+process_job (gpointer data)
+{
+  Job *job = data;
+
+  gegl_node_process (job->sink);
+  g_atomic_int_set (&job->done, 1);
+  return NULL;
+}
+
+/* Processes `sink` in a worker thread; the progress of each node of
+ * `watched` (NULL-terminated) fills the bar from `start` to `end` in
+ * equal parts, in turn. */
+static void
+run_with_progress (GeglNode *sink, GeglNode **watched, gdouble start, gdouble end)
+{
+  Job job = { sink, 0, 0 };
+  gint n_watched = 0, last = -1;
+  gulong *handlers;
+  GThread *thread;
+
+  while (watched[n_watched])
+    n_watched++;
+  handlers = g_new0 (gulong, n_watched);
+
+  for (gint i = 0; i < n_watched; i++)
+    {
+      job.permille = 0;
+      handlers[i] = g_signal_connect (watched[i], "progress", G_CALLBACK (on_progress), &job);
+    }
+
+  thread = g_thread_new ("texsynth", process_job, &job);
+  while (!g_atomic_int_get (&job.done))
+    {
+      gint permille = g_atomic_int_get (&job.permille);
+
+      if (permille != last)
+        {
+          gimp_progress_update (start + (end - start) * permille / 1000.0);
+          last = permille;
+        }
+      g_usleep (PROGRESS_POLL_US);
+    }
+  g_thread_join (thread);
+
+  for (gint i = 0; i < n_watched; i++)
+    g_signal_handler_disconnect (watched[i], handlers[i]);
+  g_free (handlers);
+  gimp_progress_update (end);
+}
+
+/* --- graphs ----------------------------------------------------------- */
+
+static GeglNode *
+source_node (GeglNode *graph, GeglBuffer *buffer)
+{
+  return gegl_node_new_child (graph, "operation", "gegl:buffer-source",
+                              "buffer", buffer, NULL);
+}
+
+/* A buffer for the op's output, in the engine's own format so that no
+ * precision is lost before GIMP converts it to the layer's. */
+static GeglBuffer *
+result_buffer (gint width, gint height)
+{
+  GeglRectangle rect = { 0, 0, width, height };
+
+  return gegl_buffer_new (&rect, babl_format ("CIE Lab alpha float"));
+}
+
+static gboolean
+fully_transparent (GeglBuffer *buffer)
+{
+  const GeglRectangle *rect = gegl_buffer_get_extent (buffer);
+  GeglBufferIterator *it = gegl_buffer_iterator_new (buffer, rect, 0, babl_format ("RGBA float"),
+                                                     GEGL_ACCESS_READ, GEGL_ABYSS_NONE, 1);
+  gboolean transparent = TRUE;
+
+  while (gegl_buffer_iterator_next (it))
+    {
+      const gfloat *pixel = it->items[0].data;
+
+      for (gint i = 0; transparent && i < it->length; i++)
+        transparent = pixel[4 * i + 3] <= 0.0f;
+    }
+  return transparent;
+}
+
+gboolean
+ts_plugin_render (const TsExemplar   *exemplar,
+                  const TsRenderArgs *args,
+                  GeglBuffer        **result,
+                  GError            **error)
+{
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *source = source_node (graph, exemplar->buffer);
+  GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_SYNTHESIZE,
+                                      "width", args->width, "height", args->height,
+                                      "tileable", args->tileable, "quality", args->quality,
+                                      "seed", args->seed, NULL);
+  GeglNode *watched[] = { op, NULL };
+  GeglNode *sink;
+
+  *result = result_buffer (args->width, args->height);
+  sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
+  gegl_node_link_many (source, op, sink, NULL);
+  run_with_progress (sink, watched, 0.0, 1.0);
+  g_object_unref (graph);
+
+  /* The op's only failure result is a transparent image (with a warning
+   * on the console), e.g. for a fully transparent or too small exemplar. */
+  if (fully_transparent (*result))
+    {
+      g_clear_object (result);
+      g_set_error (error, TS_PLUGIN_ERROR, 0,
+                   _("Texture synthesis failed: the exemplar may be too small, fully "
+                     "transparent, or the result too large for the memory (see the "
+                     "error console for the details)."));
+      return FALSE;
+    }
+  return TRUE;
+}
+
+gboolean
+ts_plugin_tileable (const TsExemplar     *exemplar,
+                    const TsTileableArgs *args,
+                    GeglBuffer          **result,
+                    GError              **error G_GNUC_UNUSED)
+{
+  const GeglRectangle *extent = gegl_buffer_get_extent (exemplar->buffer);
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *source = source_node (graph, exemplar->buffer);
+  GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_TILEABLE,
+                                      "quality", args->quality, "seed", args->seed, NULL);
+  GeglNode *watched[] = { op, NULL };
+  GeglNode *sink;
+
+  /* The op's failure leaves the picture as it was, which is what the
+   * user gets then too: there is nothing else to report. */
+  *result = result_buffer (extent->width, extent->height);
+  sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
+  gegl_node_link_many (source, op, sink, NULL);
+  run_with_progress (sink, watched, 0.0, 1.0);
+  g_object_unref (graph);
+  return TRUE;
+}
+
+static void
+connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad)
+{
+  /* GEGL 0.4.44 renamed the call (and deprecated the old name). */
+#if GEGL_MINOR_VERSION > 4 || (GEGL_MINOR_VERSION == 4 && GEGL_MICRO_VERSION >= 44)
+  gegl_node_connect (source, "output", sink, sink_pad);
+#else
+  gegl_node_connect_to (source, "output", sink, sink_pad);
+#endif
+}
+
+/* Links up to three exemplars to the input, aux and aux2 pads of `op`. */
+static void
+link_exemplars (GeglNode *graph, GeglNode *op, const TsExemplar *exemplars, gint n)
+{
+  static const gchar *const pads[] = { "input", "aux", "aux2" };
+
+  for (gint i = 0; i < n && i < 3; i++)
+    connect_pads (source_node (graph, exemplars[i].buffer), op, pads[i]);
+}
+
+static void
+set_enum_by_nick (GeglNode *node, const gchar *property, const gchar *nick)
+{
+  GParamSpec *pspec = gegl_node_find_property (node, property);
+  GEnumClass *klass;
+  GEnumValue *value;
+
+  if (!pspec || !G_IS_PARAM_SPEC_ENUM (pspec))
+    return;
+  klass = g_type_class_ref (pspec->value_type);
+  value = g_enum_get_value_by_nick (klass, nick);
+  if (value)
+    gegl_node_set (node, property, value->value, NULL);
+  g_type_class_unref (klass);
+}
+
+gboolean
+ts_plugin_solid (const TsExemplar  *exemplars,
+                 gint               n_exemplars,
+                 const TsSolidArgs *args,
+                 GeglBuffer        *slices[3],
+                 GError           **error)
+{
+  static const gchar *const axes[] = { "x", "y", "z" };
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *save, *watched[2] = { NULL, NULL };
+  GStatBuf before, after;
+  gboolean existed = g_stat (args->path, &before) == 0;
+
+  save = gegl_node_new_child (graph, "operation", TS_OP_VOLUME_SAVE, "path", args->path,
+                              "size", args->size, "quality", args->quality,
+                              "seed", args->seed, NULL);
+  link_exemplars (graph, save, exemplars, n_exemplars);
+  watched[0] = save;
+  run_with_progress (save, watched, 0.0, 0.9);
+
+  /* A sink cannot return an error: the op warns on the console and the
+   * file is not (re)written. */
+  if (g_stat (args->path, &after) != 0 || after.st_size == 0 ||
+      (existed && after.st_mtime == before.st_mtime && after.st_ino == before.st_ino))
+    {
+      g_object_unref (graph);
+      g_set_error (error, TS_PLUGIN_ERROR, 0,
+                   _("The volume could not be written to \"%s\" (see the error console "
+                     "for the details)."), args->path);
+      return FALSE;
+    }
+
+  /* The same parameters give the same volume, which the slice op keeps
+   * in its cache between the three slices. */
+  for (gint axis = 0; axis < 3; axis++)
+    {
+      GeglNode *slice = gegl_node_new_child (graph, "operation", TS_OP_VOLUME_SLICE,
+                                             "size", args->size, "index", args->size / 2,
+                                             "quality", args->quality, "seed", args->seed,
+                                             NULL);
+      GeglNode *sink;
+
+      set_enum_by_nick (slice, "axis", axes[axis]);
+      link_exemplars (graph, slice, exemplars, n_exemplars);
+      slices[axis] = result_buffer (args->size, args->size);
+      sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
+                                  "buffer", slices[axis], NULL);
+      gegl_node_link (slice, sink);
+      watched[0] = slice;
+      run_with_progress (sink, watched, 0.9 + 0.1 * axis / 3.0, 0.9 + 0.1 * (axis + 1) / 3.0);
+    }
+  g_object_unref (graph);
+  return TRUE;
+}

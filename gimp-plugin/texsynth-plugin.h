@@ -1,0 +1,142 @@
+/* The texsynth GIMP plug-in: what GIMP 2.10 and GIMP 3 share. The
+ * procedures' names, arguments, ranges and defaults; argument checks; and
+ * running the texsynth GEGL ops on private copies of GIMP's pixels.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ *
+ * The version-specific glue (registration, dialogs, reading layers and
+ * making images) is in compat-gimp2.c and compat-gimp3.c; everything here
+ * uses GEGL and the libgimp calls both versions have alike.
+ */
+#ifndef TEXSYNTH_PLUGIN_H
+#define TEXSYNTH_PLUGIN_H
+
+#include <libgimp/gimp.h>
+
+#define TS_PLUGIN_BINARY    "texsynth"
+#define TS_PROC_RENDER      "plug-in-texsynth-render"
+#define TS_PROC_TILEABLE    "plug-in-texsynth-tileable"
+#define TS_PROC_SOLID       "plug-in-texsynth-solid"
+#define TS_PLUGIN_HELP_ID   "texsynth"
+
+/* The ops the procedures run. */
+#define TS_OP_SYNTHESIZE    "texsynth:synthesize"
+#define TS_OP_TILEABLE      "texsynth:tileable"
+#define TS_OP_VOLUME_SAVE   "texsynth:volume-save"
+#define TS_OP_VOLUME_SLICE  "texsynth:volume-slice"
+
+/* Ranges and defaults as the ops declare them. */
+#define TS_PLUGIN_MAX_SIDE        16384
+#define TS_PLUGIN_MIN_QUALITY     1
+#define TS_PLUGIN_MAX_QUALITY     10
+#define TS_PLUGIN_DEFAULT_QUALITY 2
+#define TS_PLUGIN_MIN_SOLID       8
+#define TS_PLUGIN_MAX_SOLID       512
+#define TS_PLUGIN_DEFAULT_SOLID   128
+#define TS_PLUGIN_PATH_MAX        4096
+
+/* Flat structs: GIMP 2.10 stores last values as raw bytes. */
+typedef struct
+{
+  gint     width;     /* 0 in a fresh struct: twice the exemplar's */
+  gint     height;
+  gboolean tileable;
+  gint     quality;
+  gint     seed;
+} TsRenderArgs;
+
+typedef struct
+{
+  gint quality;
+  gint seed;
+} TsTileableArgs;
+
+typedef struct
+{
+  gint  size;
+  gchar path[TS_PLUGIN_PATH_MAX];
+  gint  quality;
+  gint  seed;
+} TsSolidArgs;
+
+void ts_render_args_init   (TsRenderArgs *args);
+void ts_tileable_args_init (TsTileableArgs *args);
+void ts_solid_args_init    (TsSolidArgs *args);
+
+/* Each returns NULL when the arguments are valid, else a message for the
+ * user (g_free it). */
+gchar *ts_render_args_check   (const TsRenderArgs *args);
+gchar *ts_tileable_args_check (const TsTileableArgs *args, gint width, gint height);
+gchar *ts_solid_args_check    (const TsSolidArgs *args, gint n_exemplars);
+
+/* The label and tooltip of an argument, translated, worded as the ops
+ * word their properties; NULL for an unknown name. */
+const gchar *ts_arg_label   (const gchar *name);
+const gchar *ts_arg_tooltip (const gchar *name);
+
+/* A seed for an interactive run: differs from run to run, and is then
+ * stored with the last values so that Repeat gives the same result. */
+gint ts_plugin_random_seed (void);
+
+/* Binds the gettext domain (GETTEXT_PACKAGE) to LOCALEDIR. */
+void ts_plugin_init_i18n (void);
+
+/* NULL if every op in the NULL-terminated list is available to GEGL in
+ * this process, else a message saying which is missing and how to fix it. */
+gchar *ts_plugin_check_ops (const gchar *first_op, ...) G_GNUC_NULL_TERMINATED;
+
+/* What the version glue reads from GIMP: a private copy of the pixels,
+ * so that the ops can run in a worker thread without talking to GIMP, and
+ * what the new image must keep. */
+typedef struct
+{
+  GeglBuffer       *buffer;       /* at (0, 0), in the drawable's format */
+  GimpImageBaseType base_type;    /* GIMP_RGB or GIMP_GRAY (indexed: RGB) */
+  gboolean          has_alpha;
+  GimpPrecision     precision;
+  GimpColorProfile *profile;      /* NULL: the built-in one */
+} TsExemplar;
+
+/* Copies `source_rect` of `source` to (target_x, target_y) of `target`
+ * through `format`, in this thread only (GIMP's buffers need that).
+ * FALSE if out of memory. */
+gboolean    ts_plugin_transfer    (GeglBuffer          *source,
+                                   const GeglRectangle *source_rect,
+                                   GeglBuffer          *target,
+                                   gint                 target_x,
+                                   gint                 target_y,
+                                   const Babl          *format);
+
+/* Copies `rect` of `source` (a GIMP drawable's buffer) into a new memory
+ * buffer at (0, 0) in `format`; NULL if out of memory. */
+GeglBuffer *ts_plugin_copy_buffer (GeglBuffer          *source,
+                                   const GeglRectangle *rect,
+                                   const Babl          *format);
+void        ts_exemplar_clear     (TsExemplar *exemplar);
+
+/* The babl format of a layer of the new image for `exemplar`, in `space`. */
+const Babl *ts_exemplar_layer_format (const TsExemplar *exemplar, const Babl *space);
+
+/* Run the ops. Each shows and moves GIMP's progress bar while the op works
+ * in a worker thread; GIMP's Cancel ends the plug-in process, and since
+ * nothing is written to GIMP until the op is done, the image is left as it
+ * was. On success returns TRUE and the result; else FALSE and `error`. */
+gboolean ts_plugin_render   (const TsExemplar   *exemplar,
+                             const TsRenderArgs *args,
+                             GeglBuffer        **result,
+                             GError            **error);
+gboolean ts_plugin_tileable (const TsExemplar     *exemplar,
+                             const TsTileableArgs *args,
+                             GeglBuffer          **result,
+                             GError              **error);
+/* Writes the volume to args->path and returns its three middle slices
+ * (orthogonal to x, y and z). `exemplars` has 1 to 3 entries. */
+gboolean ts_plugin_solid    (const TsExemplar  *exemplars,
+                             gint               n_exemplars,
+                             const TsSolidArgs *args,
+                             GeglBuffer        *slices[3],
+                             GError           **error);
+
+#define TS_PLUGIN_ERROR ts_plugin_error_quark ()
+GQuark ts_plugin_error_quark (void);
+
+#endif /* TEXSYNTH_PLUGIN_H */

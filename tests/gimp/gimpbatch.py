@@ -1,0 +1,174 @@
+# Running headless GIMP (2.10 or 3) in batch mode for the plug-in's tests:
+# a throwaway profile with the plug-in installed, and Script-Fu snippets in
+# each version's dialect that print "TSRESULT <tag> <values>" lines.
+# SPDX-License-Identifier: GPL-3.0-or-later
+
+import os
+import re
+import shutil
+import subprocess
+
+import tsops
+
+
+def gegl_has(op):
+    """Whether the gegl tool (same GEGL_PATH as GIMP) finds `op`."""
+    gegl = os.environ.get("TEXSYNTH_GEGL") or shutil.which("gegl")
+    if not gegl:
+        return False
+    proc = subprocess.run([gegl, "--exists", op], capture_output=True, timeout=60)
+    return proc.returncode == 0
+
+
+def quote(text):
+    return '"%s"' % text.replace("\\", "\\\\").replace('"', '\\"')
+
+
+class ScriptFu2:
+    """GIMP 2.10's Script-Fu: drawables by ID, results wrapped in lists."""
+
+    version = 2
+    # GIMP_PRECISION_U16_LINEAR / _GAMMA
+    u16_precisions = (200, 250)
+
+    def load(self, path):
+        return ("(img (car (gimp-file-load RUN-NONINTERACTIVE %s %s)))"
+                " (drw (car (gimp-image-get-active-drawable img)))" % (quote(path), quote(path)))
+
+    def drawables(self):
+        return "drw"
+
+    def width(self, image):
+        return "(car (gimp-image-width %s))" % image
+
+    def height(self, image):
+        return "(car (gimp-image-height %s))" % image
+
+    def n_layers(self, image):
+        return "(car (gimp-image-get-layers %s))" % image
+
+    def active_layer(self, image):
+        return "(car (gimp-image-get-active-layer %s))" % image
+
+    def save(self, image, layer, path):
+        return "(gimp-file-save RUN-NONINTERACTIVE %s %s %s %s)" % (
+            image, layer, quote(path), quote(path))
+
+    def pixel(self, layer, x, y):
+        """The pixel's values as a Scheme list."""
+        return "(vector->list (cadr (gimp-drawable-get-pixel %s %d %d)))" % (layer, x, y)
+
+    def is_calling_error(self, text):
+        return "invalid input arguments" in text
+
+    # -- common snippets built from the above --
+
+    def message(self, tag, *values):
+        parts = " \" \" ".join("(number->string %s)" % v for v in values)
+        return '(gimp-message (string-append "TSRESULT %s " %s))' % (tag, parts)
+
+    def render_call(self, w, h, tileable, quality, seed):
+        return "(plug-in-texsynth-render RUN-NONINTERACTIVE img %s %d %d %s %d %d)" % (
+            self.drawables(), w, h, tileable, quality, seed)
+
+    def render_report(self, tag, path, w, h, tileable, quality, seed, save=None, select=None):
+        body = ""
+        if select:
+            body += "(gimp-image-select-rectangle img CHANNEL-OP-REPLACE %d %d %d %d) " % select
+        body += "(let* ((out (car %s)) (layer %s)) " % (
+            self.render_call(w, h, tileable, quality, seed), self.active_layer("out"))
+        if save:
+            body += self.save("out", "layer", save) + " "
+        body += self.message(tag, self.width("out"), self.height("out"),
+                             "(car (gimp-image-get-precision img))",
+                             "(car (gimp-image-get-precision out))",
+                             "(car (gimp-drawable-has-alpha layer))")
+        return "(let* (%s) %s))" % (self.load(path), body)
+
+    def tileable_report(self, tag, path, quality, seed, save=None):
+        corner = self.pixel("drw", 0, 0)
+        middle = self.pixel("drw", 48, 48)
+        body = ("(let* ((c0 %s) (m0 %s)) (plug-in-texsynth-tileable RUN-NONINTERACTIVE img %s %d %d) "
+                % (corner, middle, self.drawables(), quality, seed))
+        if save:
+            body += self.save("img", "drw", save) + " "
+        body += self.message(tag, "(if (equal? c0 %s) 0 1)" % corner,
+                             "(if (equal? m0 %s) 1 0)" % middle) + ")"
+        return "(let* (%s) %s)" % (self.load(path), body)
+
+    def solid_report(self, tag, path, size, volume, quality, seed):
+        body = ("(let* ((out (car (plug-in-texsynth-solid RUN-NONINTERACTIVE img %s %d %s %d %d)))) %s)"
+                % (self.drawables(), size, quote(volume), quality, seed,
+                   self.message(tag, self.width("out"), self.height("out"), self.n_layers("out"))))
+        return "(let* (%s) %s)" % (self.load(path), body)
+
+    def marked(self, tag, call, path):
+        return '(begin (gimp-message "TSCALL %s") (let* (%s) %s))' % (tag, self.load(path), call)
+
+    def call_render(self, tag, path, w, h, tileable, quality, seed):
+        return self.marked(tag, self.render_call(w, h, tileable, quality, seed), path)
+
+    def call_solid(self, tag, path, size, volume, quality, seed):
+        return self.marked(tag, "(plug-in-texsynth-solid RUN-NONINTERACTIVE img %s %d %s %d %d)"
+                           % (self.drawables(), size, quote(volume), quality, seed), path)
+
+
+class Gimp:
+    """One GIMP version: its console binary, a throwaway profile holding
+    the plug-in, and batch runs."""
+
+    def __init__(self, console, plugin, work):
+        self.console = console
+        self.version = 3 if "3" in os.path.basename(console).split("-")[-1] else 2
+        self.sf = ScriptFu2() if self.version == 2 else __import__("scriptfu3").ScriptFu3()
+        self.profile = os.path.join(work, "gimp-profile")
+        plugin_dir = os.path.join(self.profile, "plug-ins", "texsynth")
+        os.makedirs(plugin_dir)
+        shutil.copy2(plugin, os.path.join(plugin_dir, "texsynth"))
+        for folder in ("brushes", "gradients", "patterns", "palettes", "fonts", "tmp"):
+            os.makedirs(os.path.join(self.profile, folder), exist_ok=True)
+        self.home = os.path.join(work, "home")
+        os.makedirs(self.home)
+
+    def env(self):
+        env = dict(os.environ)
+        env["GIMP2_DIRECTORY" if self.version == 2 else "GIMP3_DIRECTORY"] = self.profile
+        env["HOME"] = self.home  # nothing may touch the user's own config
+        env["XDG_CONFIG_HOME"] = os.path.join(self.home, ".config")
+        env["XDG_CACHE_HOME"] = os.path.join(self.home, ".cache")
+        env["XDG_DATA_HOME"] = os.path.join(self.home, ".local", "share")
+        env.pop("DISPLAY", None)
+        return env
+
+    def command(self, snippets, interactive=False):
+        cmd = [self.console, "-i", "-d", "-f"] if not interactive else [self.console, "-d", "-f", "-s"]
+        if self.version >= 3:
+            cmd += ["--batch-interpreter=plug-in-script-fu-eval"]
+        for snippet in snippets:
+            cmd += ["-b", snippet]
+        return cmd + ["-b", "(gimp-quit 0)" if self.version == 2 else "(gimp-quit TRUE)"]
+
+    def run(self, snippets, timeout=600):
+        """Run the snippets in one GIMP session: (exit code, output, '')
+        with stderr merged into stdout so that messages keep their order."""
+        try:
+            proc = subprocess.run(self.command(snippets), env=self.env(), stdin=subprocess.DEVNULL,
+                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                  text=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            tsops.die("GIMP did not finish within %d s" % timeout)
+        tsops.note("---- GIMP output ----\n%s---- end of GIMP output ----" % proc.stdout)
+        return proc.returncode, proc.stdout, ""
+
+    @staticmethod
+    def error_text(lines, tag):
+        """The error GIMP reported for the call marked `tag`, if any."""
+        seen = False
+        for line in lines:
+            if "TSCALL " + tag in line:
+                seen = True
+            elif seen and "TSCALL " in line:
+                return None
+            elif seen and re.match(r"\s*Error:", line):
+                return line.strip()
+        return None
