@@ -142,7 +142,7 @@ static const struct
     N_("The same seed with the same settings gives the same result, whatever the "
        "number of threads; change it for another variation") },
   { "size", N_("Size"),
-    N_("Edge of the cube in voxels: the volume has size Ã size Ã size voxels") },
+    N_("Edge of the cube in voxels: the volume has size \303\227 size \303\227 size voxels") },
   { "path", N_("File"),
     N_("Where to write the volume; the name's ending chooses the format: .vol "
        "(raw floats), .dds (volume texture) or .png (slices)") },
