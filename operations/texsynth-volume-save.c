@@ -336,6 +336,28 @@ save (GeglOperation *operation, GeglBuffer *input, GeglBuffer *aux, GeglBuffer *
                error.message[0] ? error.message : ts_status_string (error.status));
 }
 
+/* The buffer of an input pad. GEGL's processor gives a sink that needs
+ * all of its input only "input" (the producer's cache), so the exemplar
+ * pads added here are rendered on demand. NULL if not connected. */
+static GeglBuffer *
+pad_buffer (GeglOperation *operation, GeglOperationContext *context, const gchar *pad)
+{
+  GObject *object = gegl_operation_context_dup_object (context, pad);
+  GeglNode *source = gegl_operation_get_source_node (operation, pad);
+  GeglRectangle rect;
+  GeglBuffer *buffer;
+
+  if (object)
+    return GEGL_BUFFER (object);
+  if (!source)
+    return NULL;
+  rect = ts_volume_op_required_input (operation, pad);
+  buffer = gegl_buffer_new (&rect, babl_format (TS_OP_FORMAT));
+  if (rect.width > 0 && rect.height > 0)
+    gegl_node_blit_buffer (source, buffer, &rect, 0, GEGL_ABYSS_NONE);
+  return buffer;
+}
+
 /* Replaces the sink's processing, which only passes "input" on. */
 static gboolean
 process (GeglOperation        *operation,
@@ -344,12 +366,11 @@ process (GeglOperation        *operation,
          const GeglRectangle  *roi G_GNUC_UNUSED,
          gint                  level G_GNUC_UNUSED)
 {
-  GObject *input = gegl_operation_context_dup_object (context, "input");
-  GObject *aux = gegl_operation_context_dup_object (context, "aux");
-  GObject *aux2 = gegl_operation_context_dup_object (context, "aux2");
+  GeglBuffer *input = pad_buffer (operation, context, "input");
+  GeglBuffer *aux = pad_buffer (operation, context, "aux");
+  GeglBuffer *aux2 = pad_buffer (operation, context, "aux2");
 
-  save (operation, input ? GEGL_BUFFER (input) : NULL, aux ? GEGL_BUFFER (aux) : NULL,
-        aux2 ? GEGL_BUFFER (aux2) : NULL);
+  save (operation, input, aux, aux2);
   g_clear_object (&input);
   g_clear_object (&aux);
   g_clear_object (&aux2);

@@ -79,6 +79,36 @@ read_pad (GeglOperation *operation, const gchar *pad, GeglBuffer *buffer, TsImag
   return TRUE;
 }
 
+/* The engine names orientations; say which pad gave each exemplar. */
+static void
+name_pads (const TsImage *const exemplars[3], const TsImage *const pads[3], TsError *error)
+{
+  static const char *const axis_names[3] = { "x", "y", "z" };
+  GString *text;
+
+  if (error->status != TS_ERROR_EMPTY_EXEMPLAR && error->status != TS_ERROR_TRANSPARENT_EXEMPLAR &&
+      error->status != TS_ERROR_EXEMPLAR_TOO_SMALL)
+    return;
+  text = g_string_new (error->message);
+  g_string_append (text, " (");
+  for (int p = 0, listed = 0; p < 3; p++)
+    {
+      int axes = 0;
+      if (!pads[p])
+        continue;
+      g_string_append_printf (text, "%s'%s' gives the slices across", listed++ ? "; " : "",
+                              pad_names[p]);
+      for (int a = 0; a < 3; a++)
+        if (exemplars[a] == pads[p])
+          g_string_append_printf (text, "%s %s", axes++ ? "," : "", axis_names[a]);
+      if (!axes)
+        g_string_append (text, " none");
+    }
+  g_string_append (text, ")");
+  g_strlcpy (error->message, text->str, sizeof error->message);
+  g_string_free (text, TRUE);
+}
+
 TsVolumeEntry *
 ts_volume_op_acquire (GeglOperation       *operation,
                       GeglBuffer          *input,
@@ -120,6 +150,8 @@ ts_volume_op_acquire (GeglOperation       *operation,
       entry = ts_volume_cache_acquire (params, exemplars, ts_op_progress_func, &progress, error);
       ts_op_progress_func (1.0, "done", &progress);
       ts_op_progress_clear (&progress);
+      if (!entry)
+        name_pads (exemplars, pads, error);
     }
 
   for (int i = 0; i < 3; i++)
