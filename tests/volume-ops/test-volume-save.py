@@ -111,9 +111,39 @@ with volops.captured_stderr(log):
                                volops.load_u8(atlas)[2]) <= 1,
           "atlas.png equals the atlas across y")
 
+    note("-- an XML graph with volume-save as its last node")
+    xml_vol = os.path.join(tmp, "xml.vol")
+    graph = Gegl.Node.new_from_xml(
+        "<gegl><node operation='%s'><params><param name='path'>%s</param>%s</params></node>"
+        "<node operation='gegl:load'><params><param name='path'>%s</param></params></node>"
+        "</gegl>" % (SAVE, xml_vol, "".join("<param name='%s'>%s</param>" % kv
+                                            for kv in SETTINGS.items()), bark), "/")
+    sink = [n for n in graph.get_children() if n.get_operation() == SAVE]
+    if sink:
+        sink[0].process()
+    check(sink and os.path.isfile(xml_vol) and open(xml_vol, "rb").read() == open(vol, "rb").read()
+          .replace(b"wood", b"xml\0", 1), "the XML graph writes the same volume")
+
 check(volops.cache_misses(log[0]) == 1,
-      "one synthesis for 5 saves and %d slices and atlases: %d cache misses"
+      "one synthesis for 6 saves and %d slices and atlases: %d cache misses"
       % (13, volops.cache_misses(log[0])))
+
+note("-- the gegl tool")
+cli_vol = os.path.join(tmp, "cli.dds")
+code, _, err = tsops.run_gegl(["-i", bark, "--", SAVE, "path=" + cli_vol]
+                              + volops.prop_args(SETTINGS))
+check(code == 0 and not volops.op_warnings(err, SAVE) and os.path.isfile(cli_vol)
+      and open(cli_vol, "rb").read() == open(dds, "rb").read(),
+      "gegl -i bark.png -- %s path=cli.dds ...: the same file as in-process" % SAVE)
+
+note("-- a translucent exemplar gives a 4-channel .vol")
+holes = os.path.join(tmp, "translucent.png")
+tsops.convert(bark, holes, "R'G'B'A u8", alpha_fn=lambda x, y, w, h: 0.5)
+alpha_vol = os.path.join(tmp, "alpha.vol")
+warnings = save(alpha_vol, source=holes, size=8)
+h = volops.vol_header(alpha_vol) if os.path.isfile(alpha_vol) else {}
+check(not warnings and h.get("channels") == 4 and h.get("length") == 4096 + 8 ** 3 * 4,
+      "channels %s, length %s" % (h.get("channels"), h.get("length")))
 
 note("-- exemplar pads and a free orientation")
 with volops.captured_stderr(log):
