@@ -45,11 +45,12 @@ for lang in languages:
     po = os.path.join(po_dir, lang + ".po")
     if not tsops.check(os.path.isfile(po), "%s.po exists" % lang):
         continue
-    run = subprocess.run(["msgfmt", "--check", "--statistics", "-o", os.devnull, po],
+    run = subprocess.run(["msgfmt", "--check", "--check-accelerators=_", "--statistics",
+                          "-o", os.devnull, po],
                          capture_output=True, text=True, env=dict(os.environ, LC_ALL="C"))
     stats = run.stderr.strip()
     tsops.note("%s: %s" % (lang, stats))
-    tsops.check(run.returncode == 0, "%s.po passes msgfmt --check (formats, header)" % lang)
+    tsops.check(run.returncode == 0, "%s.po passes msgfmt --check (formats, header, mnemonics)" % lang)
     tsops.check(re.fullmatch(r"\d+ translated messages?\.", stats.splitlines()[-1] if stats else ""),
                 "%s.po is 100%% translated: no fuzzy or untranslated messages" % lang)
 
