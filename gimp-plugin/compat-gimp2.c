@@ -59,7 +59,7 @@ query (void)
     { GIMP_PDB_IMAGE, "new-image", "The new image" },
   };
 
-  gimp_plugin_domain_register (GETTEXT_PACKAGE, LOCALEDIR);
+  gimp_plugin_domain_register (GETTEXT_PACKAGE, ts_plugin_locale_dir ());
 
   gimp_install_procedure (TS_PROC_RENDER,
                           N_("Synthesise a new texture of any size from the layer"),

@@ -181,10 +181,18 @@ ts_plugin_random_seed (void)
   return g_random_int_range (0, G_MAXINT);
 }
 
+const gchar *
+ts_plugin_locale_dir (void)
+{
+  const gchar *dir = g_getenv ("TEXSYNTH_LOCALEDIR");
+
+  return dir && *dir ? dir : LOCALEDIR;
+}
+
 void
 ts_plugin_init_i18n (void)
 {
-  bindtextdomain (GETTEXT_PACKAGE, LOCALEDIR);
+  bindtextdomain (GETTEXT_PACKAGE, ts_plugin_locale_dir ());
   bind_textdomain_codeset (GETTEXT_PACKAGE, "UTF-8");
 }
 

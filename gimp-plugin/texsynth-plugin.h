@@ -77,7 +77,11 @@ const gchar *ts_arg_tooltip (const gchar *name);
  * stored with the last values so that Repeat gives the same result. */
 gint ts_plugin_random_seed (void);
 
-/* Binds the gettext domain (GETTEXT_PACKAGE) to LOCALEDIR. */
+/* The folder of the translations: LOCALEDIR, or $TEXSYNTH_LOCALEDIR if set
+ * (tests point it at the build tree's catalogues). */
+const gchar *ts_plugin_locale_dir (void);
+
+/* Binds the gettext domain (GETTEXT_PACKAGE) to ts_plugin_locale_dir (). */
 void ts_plugin_init_i18n (void);
 
 /* NULL if every op in the NULL-terminated list is available to GEGL in
