@@ -471,7 +471,7 @@ set_i18n (GimpPlugIn  *plug_in G_GNUC_UNUSED,
    * the plug-in. */
   ts_plugin_init_i18n ();
   *gettext_domain = g_strdup (GETTEXT_PACKAGE);
-  *catalog_dir = g_strdup (LOCALEDIR);
+  *catalog_dir = g_strdup (ts_plugin_locale_dir ());
   return TRUE;
 }
 
