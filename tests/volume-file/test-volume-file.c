@@ -217,7 +217,7 @@ test_dds_bytes (void)
   if (data && length >= 148)
     {
       size_t n = SIZE * SIZE * SIZE;
-      uint8_t *legacy = malloc (128 + n * 4);
+      uint8_t *legacy = malloc (148 + n * 4);   /* room for the DX10 variants below */
       memcpy (legacy, data, 128);
       ts_put_le32 (legacy + 80, 0x41); /* DDPF_RGB | DDPF_ALPHAPIXELS */
       memset (legacy + 84, 0, 4);
