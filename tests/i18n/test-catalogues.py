@@ -1,7 +1,8 @@
 # The translations are complete and current: every language of po/LINGUAS
 # passes `msgfmt --check` with every message translated (none fuzzy or
-# untranslated), and every string the sources mark today (a fresh xgettext
-# run over po/POTFILES) has a translation in every language.
+# untranslated), every string the sources mark today (a fresh xgettext run
+# over po/POTFILES) has a translation in every language, and every source
+# file with marked strings is listed in po/POTFILES.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 #
 # Usage: test-catalogues.py --source-root DIR [--xgettext-arg ARG]...
@@ -79,5 +80,21 @@ for lang in languages:
                     lang, "" if run.returncode == 0 else
                     "; run `meson compile -C build texsynth-update-po` and translate:\n"
                     + run.stderr.strip()))
+
+# --- every source file with marked strings is in POTFILES ------------------
+MARK = re.compile(r'\b(?:_|N_|C_|NC_|TS_|TS_N_)\s*\(\s*"|\bts_fail\s*\([^;]*?"', re.S)
+unlisted = []
+for folder in ("common", "operations", "gimp-plugin"):
+    for dirpath, _dirs, files in os.walk(os.path.join(root, folder)):
+        for name in sorted(files):
+            if not name.endswith((".c", ".h")):
+                continue
+            path = os.path.join(dirpath, name)
+            rel = os.path.relpath(path, root)
+            with open(path, encoding="utf-8", errors="replace") as f:
+                if MARK.search(f.read()) and rel not in potfiles:
+                    unlisted.append(rel)
+tsops.check(not unlisted, "every source file with translatable strings is in po/POTFILES%s" % (
+    "" if not unlisted else "; add: " + " ".join(unlisted)))
 
 tsops.finish()
