@@ -404,16 +404,6 @@ prepare (GeglOperation *operation)
   ts_volume_op_prepare_inputs (operation);
 }
 
-/* Never empty, so that GEGL always runs process(), which reports an
- * empty exemplar instead of silently writing nothing. */
-static GeglRectangle
-get_bounding_box (GeglOperation *operation G_GNUC_UNUSED)
-{
-  GeglRectangle box = { 0, 0, 1, 1 };
-
-  return box;
-}
-
 static GeglRectangle
 get_required_for_output (GeglOperation       *operation,
                          const gchar         *input_pad,
@@ -431,7 +421,6 @@ gegl_op_class_init (GeglOpClass *klass)
   operation_class->attach                  = attach;
   operation_class->prepare                 = prepare;
   operation_class->process                 = process;
-  operation_class->get_bounding_box        = get_bounding_box;
   operation_class->get_required_for_output = get_required_for_output;
   operation_class->threaded                = FALSE;
   /* One call with all of every input, once per processing. */
