@@ -51,8 +51,10 @@ for lang in languages:
                          capture_output=True, text=True, env=dict(os.environ, LC_ALL="C"))
     stats = run.stderr.strip()
     tsops.note("%s: %s" % (lang, stats))
-    tsops.check(run.returncode == 0, "%s.po passes msgfmt --check (formats, header, mnemonics)" % lang)
-    tsops.check(re.fullmatch(r"\d+ translated messages?\.", stats.splitlines()[-1] if stats else ""),
+    tsops.check(run.returncode == 0,
+                "%s.po passes msgfmt --check (formats, header, mnemonics)" % lang)
+    last = stats.splitlines()[-1] if stats else ""
+    tsops.check(re.fullmatch(r"\d+ translated messages?\.", last),
                 "%s.po is 100%% translated: no fuzzy or untranslated messages" % lang)
 
 # --- every marked string of today's sources is translated ------------------
