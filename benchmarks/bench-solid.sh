@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# Solid (volume) synthesis time and peak memory through the gegl tool, per
+# exemplar, volume size and thread count.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+#
+# Time = median wall time of
+#   gegl -i EXEMPLAR -o slice.png -- texsynth:volume-slice size=N
+# minus the median of the same command with a trivial op (gegl:crop),
+# which leaves GEGL's start-up, loading and PNG writing out. Peak memory
+# is the largest maximum resident set size (/usr/bin/time) of those runs,
+# and "extra" its excess over the trivial op's (GEGL alone takes a few
+# hundred MiB here, most of it before any pixel is processed).
+# GEGL_THREADS=1 throughout; OMP_NUM_THREADS varies.
+#
+# Usage: benchmarks/bench-solid.sh [-b BUILD_DIR] [-e EXEMPLAR_DIR]
+#          [-s "64 128 256"] [-t "1 2"] [-r RUNS] [-x "granite1 java"] [-c SIDE]
+# -c 128 (the default) measures on 128x128 central crops of the exemplars at
+# least that large and skips smaller ones; -c 0 uses them whole.
+
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")/.." && pwd)
+build="$here/build"
+exemplars="$here/../shared/exemplars"
+[ -d "$exemplars" ] || exemplars="$here/examples"
+sizes="64 128 256"
+threads="2"
+runs=3
+only=""
+crop=128
+
+while getopts "b:e:s:t:r:x:c:h" opt; do
+  case "$opt" in
+    b) build=$OPTARG ;;
+    e) exemplars=$OPTARG ;;
+    s) sizes=$OPTARG ;;
+    t) threads=$OPTARG ;;
+    r) runs=$OPTARG ;;
+    x) only=$OPTARG ;;
+    c) crop=$OPTARG ;;
+    *) sed -n '2,17p' "$0"; exit 2 ;;
+  esac
+done
+
+gegl_plugins=$(pkg-config --variable=pluginsdir gegl-0.4 2>/dev/null || echo /usr/lib/x86_64-linux-gnu/gegl-0.4)
+export GEGL_PATH="$build/operations:$gegl_plugins"
+export GEGL_THREADS=1
+
+# An unknown op is no error to gegl (it passes the image through): check.
+if ! gegl --exists texsynth:volume-slice >/dev/null 2>&1; then
+  echo "texsynth:volume-slice not found in $build/operations: build first (meson setup build && ninja -C build)" >&2
+  exit 1
+fi
+[ -x /usr/bin/time ] || { echo "/usr/bin/time is missing (Debian package 'time')" >&2; exit 1; }
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+# Runs gegl ARGS... RUNS times; prints "median_seconds peak_kib".
+measure() {
+  local i start end times="" peak=0 rss
+  for ((i = 0; i < runs; i++)); do
+    start=$(date +%s.%N)
+    env $run_env /usr/bin/time -f %M -o "$tmp/rss" gegl "$@" >/dev/null 2>"$tmp/err" ||
+      { cat "$tmp/err" >&2; exit 1; }
+    end=$(date +%s.%N)
+    grep -q "texsynth" "$tmp/err" && { cat "$tmp/err" >&2; exit 1; }
+    times="$times $(echo "$end - $start" | bc -l)"
+    rss=$(tail -1 "$tmp/rss")
+    [ "$rss" -gt "$peak" ] && peak=$rss
+  done
+  echo "$(echo "$times" | median) $peak"
+}
+
+files=()
+if [ -n "$only" ]; then
+  for name in $only; do files+=("$exemplars/$name.png"); done
+else
+  files=("$exemplars"/*.png)
+fi
+if [ "$crop" -gt 0 ]; then
+  cropped=()
+  for ex in "${files[@]}"; do
+    # PNG width and height: big-endian 32-bit at bytes 16 and 20.
+    read -r w h < <(od -An -tu1 -j16 -N8 "$ex" |
+      awk '{ print ($1 * 2^24 + $2 * 2^16 + $3 * 256 + $4), ($5 * 2^24 + $6 * 2^16 + $7 * 256 + $8) }')
+    [ "${w:-0}" -ge "$crop" ] && [ "${h:-0}" -ge "$crop" ] || continue
+    out="$tmp/$(basename "$ex")"
+    gegl -i "$ex" -o "$out" -- gegl:crop x=$(( (w - crop) / 2 )) y=$(( (h - crop) / 2 )) \
+      width="$crop" height="$crop" >/dev/null 2>&1
+    cropped+=("$out")
+  done
+  files=("${cropped[@]}")
+fi
+
+echo "# texsynth solid synthesis, $(date -u +%Y-%m-%d), $(nproc) cores, $runs runs, GEGL_THREADS=1"
+printf '%-12s %6s %8s %9s %10s %10s\n' exemplar size threads seconds peak-MiB extra-MiB
+declare -A all peaks extras
+for size in $sizes; do
+  for t in $threads; do
+    run_env="OMP_NUM_THREADS=$t"
+    for ex in "${files[@]}"; do
+      name=$(basename "$ex" .png)
+      read -r base base_peak < <(measure -i "$ex" -o "$tmp/base.png" -- gegl:crop width="$size" height="$size")
+      read -r full peak < <(measure -i "$ex" -o "$tmp/slice.png" -- texsynth:volume-slice size="$size")
+      synth=$(echo "$full - $base" | bc -l)
+      extra=$(( peak > base_peak ? peak - base_peak : 0 ))
+      printf '%-12s %6s %8s %9.2f %10.1f %10.1f\n' "$name" "${size}^3" "$t" "$synth" \
+        "$(echo "$peak / 1024" | bc -l)" "$(echo "$extra / 1024" | bc -l)"
+      all[$size,$t]="${all[$size,$t]:-} $synth"
+      peaks[$size,$t]="${peaks[$size,$t]:-} $peak"
+      extras[$size,$t]="${extras[$size,$t]:-} $extra"
+    done
+    printf '%-12s %6s %8s %9.2f %10.1f %10.1f\n' median "${size}^3" "$t" \
+      "$(echo "${all[$size,$t]}" | median)" "$(echo "$(echo "${peaks[$size,$t]}" | median) / 1024" | bc -l)" \
+      "$(echo "$(echo "${extras[$size,$t]}" | median) / 1024" | bc -l)"
+  done
+done
