@@ -154,6 +154,9 @@ check_drawables (GimpDrawable **drawables, gint max)
 {
   gint n = count_drawables (drawables);
 
+  /* libgimp initialises GEGL only for its own buffer calls; the ops must
+   * be registered before they are looked up. */
+  gegl_init (NULL, NULL);
   if (n < 1 || n > max)
     return max == 1 ? g_strdup (_("Select exactly one layer."))
                     : g_strdup_printf (_("Select one to %d layers."), max);
@@ -467,12 +470,20 @@ set_i18n (GimpPlugIn  *plug_in G_GNUC_UNUSED,
           gchar      **gettext_domain,
           gchar      **catalog_dir)
 {
-  /* The catalogs are installed with the rest of texsynth's, not beside
-   * the plug-in. */
+  /* GIMP 3 takes the catalogs for menu labels and argument texts only
+   * from below the plug-in's folder (NULL: its locale/) and refuses any
+   * other; the plug-in's own dialogs and messages use texsynth's
+   * installed catalogs, bound by ts_plugin_init_i18n. */
+  gchar *folder = g_path_get_dirname (gimp_get_progname ());
+  gchar *catalogs = g_build_filename (folder, "locale", NULL);
+  gboolean found = g_file_test (catalogs, G_FILE_TEST_IS_DIR);
+
+  g_free (catalogs);
+  g_free (folder);
   ts_plugin_init_i18n ();
   *gettext_domain = g_strdup (GETTEXT_PACKAGE);
-  *catalog_dir = g_strdup (ts_plugin_locale_dir ());
-  return TRUE;
+  *catalog_dir = NULL;
+  return found;
 }
 
 static void

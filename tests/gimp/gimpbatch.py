@@ -59,7 +59,7 @@ class ScriptFu2:
         return "(vector->list (cadr (gimp-drawable-get-pixel %s %d %d)))" % (layer, x, y)
 
     def is_calling_error(self, text):
-        return "invalid input arguments" in text
+        return "Calling error for procedure" in text
 
     # -- common snippets built from the above --
 
@@ -143,10 +143,11 @@ class Gimp:
     def command(self, snippets, interactive=False):
         cmd = [self.console, "-i", "-d", "-f"] if not interactive else [self.console, "-d", "-f", "-s"]
         if self.version >= 3:
-            cmd += ["--batch-interpreter=plug-in-script-fu-eval"]
+            # GIMP 3 stops at the first failing command and would then wait.
+            cmd += ["--batch-interpreter=plug-in-script-fu-eval", "--quit"]
         for snippet in snippets:
             cmd += ["-b", snippet]
-        return cmd + ["-b", "(gimp-quit 0)" if self.version == 2 else "(gimp-quit TRUE)"]
+        return cmd + (["-b", "(gimp-quit 0)"] if self.version == 2 else [])
 
     def run(self, snippets, timeout=600):
         """Run the snippets in one GIMP session: (exit code, output, '')
@@ -162,13 +163,14 @@ class Gimp:
 
     @staticmethod
     def error_text(lines, tag):
-        """The error GIMP reported for the call marked `tag`, if any."""
+        """GIMP's report of the error of the call marked `tag`, if any:
+        "Calling error for procedure '...':" and the message after it."""
         seen = False
-        for line in lines:
+        for i, line in enumerate(lines):
             if "TSCALL " + tag in line:
                 seen = True
             elif seen and "TSCALL " in line:
                 return None
-            elif seen and re.match(r"\s*Error:", line):
-                return line.strip()
+            elif seen and re.search(r"(Calling|Execution) error for procedure|^Error: argument", line):
+                return " ".join(l.strip() for l in lines[i:i + 2])
         return None

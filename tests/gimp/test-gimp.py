@@ -69,7 +69,10 @@ batch = [
     sf.render_report("renderselection", bark, 40, 30, "FALSE", 1, 5, select=(10, 10, 40, 40)),
     # In place and undoable: one undo step restores the layer.
     sf.tileable_report("tileable", brick, 2, 5, save=tileable),
-    # Bad arguments: a clear calling error, never a crash.
+]
+# Bad arguments: a clear calling error, never a crash. GIMP 3 stops a
+# batch at its first error, so there each gets a session of its own.
+errors = [
     sf.call_render("badwidth", bark, 0, 80, "FALSE", 2, 7),
     sf.call_render("badquality", bark, 80, 80, "FALSE", 11, 7),
     sf.call_solid("badpath", bark, 16, "/nonexistent-folder/v.vol", 1, 1),
@@ -80,9 +83,11 @@ if has_solid_ops:
 if gimp.version >= 3:
     batch.append(sf.filter_report("filter", brick))
 
-code, out, err = gimp.run(batch)
-lines = out.splitlines() + err.splitlines()
+code, out, _ = gimp.run(batch)
+lines = out.splitlines()
 tsops.check(code == 0, "GIMP exits normally (exit code %d)" % code)
+for session in ([[e] for e in errors] if gimp.version >= 3 else [errors]):
+    lines += gimp.run(session)[1].splitlines()
 tsops.check(not any("crashed" in line for line in lines), "the plug-in never crashes")
 
 # --- results ------------------------------------------------------------------
@@ -142,8 +147,10 @@ def calling_error(tag, pattern):
                 "%s: calling error with a clear message (%r)" % (tag, text))
 
 
-calling_error("badwidth", r"width must be between 1 and 16384|width.*out of range|value '0' for argument 'width'")
-calling_error("badquality", r"[Qq]uality must be between 1 and 10|quality.*out of range|value '11' for argument 'quality'")
+# GIMP 3's Script-Fu names the argument by its position (width is the 4th,
+# quality the 7th, after run mode, image and drawables).
+calling_error("badwidth", r"width must be between 1 and 16384|argument 4 .*value 0 out of range: 1 to 16384")
+calling_error("badquality", r"[Qq]uality must be between 1 and 10|argument 7 .*value 11 out of range: 1 to 10")
 calling_error("badpath", r"folder \"/nonexistent-folder\" does not exist")
 calling_error("badformat", r"must end in \.vol, \.dds or \.png")
 
