@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later
  */
 #include "op-common.h"
+#include "op-lab.h"
 
 #include <glib/gi18n-lib.h>
 #include <stdio.h>
@@ -85,8 +86,7 @@ ts_op_read_input (GeglOperation *operation,
                 rect.width, rect.height, (double) (floats * sizeof (float)) / 1048576.0);
       return FALSE;
     }
-  gegl_buffer_get (input, &rect, 1.0, babl_format (TS_OP_FORMAT), image->pixels,
-                   GEGL_AUTO_ROWSTRIDE, GEGL_ABYSS_NONE);
+  ts_op_read_lab (input, &rect, image->pixels);
   image->width = (size_t) rect.width;
   image->height = (size_t) rect.height;
   return TRUE;

@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later
  */
 #include "volume-op-common.h"
+#include "op-lab.h"
 
 #include <glib/gi18n-lib.h>
 #include <stdio.h>
@@ -72,8 +73,7 @@ read_pad (GeglOperation *operation, const gchar *pad, GeglBuffer *buffer, TsImag
                 rect.width, rect.height, pad, (double) bytes / 1048576.0);
       return FALSE;
     }
-  gegl_buffer_get (buffer, &rect, 1.0, babl_format (TS_OP_FORMAT), image->pixels,
-                   GEGL_AUTO_ROWSTRIDE, GEGL_ABYSS_NONE);
+  ts_op_read_lab (buffer, &rect, image->pixels);
   image->width = (size_t) rect.width;
   image->height = (size_t) rect.height;
   return TRUE;

@@ -1,0 +1,22 @@
+/* Reading an exemplar into the engine's CIE Lab with the same numbers in
+ * every process.
+ * SPDX-License-Identifier: LGPL-3.0-or-later
+ *
+ * babl chooses among its conversion paths by timing them (and caches the
+ * choice per user), so two processes may convert the same pixels to Lab
+ * differently, by up to about 1e-4; synthesis turns such a difference into
+ * a completely different texture. The common exemplar formats are
+ * therefore converted here, with fixed arithmetic.
+ */
+#ifndef TEXSYNTH_OP_LAB_H
+#define TEXSYNTH_OP_LAB_H
+
+#include <gegl.h>
+
+/* Reads `rect` of `buffer` as "CIE Lab alpha float" into `lab` (4 floats
+ * per pixel, rows of rect->width). Formats of the RGB and grey models in
+ * u8, u16 or float, in a space with the sRGB, a linear or a gamma curve,
+ * are converted here; any other format (or if memory is short) by babl. */
+void ts_op_read_lab (GeglBuffer *buffer, const GeglRectangle *rect, float *lab);
+
+#endif /* TEXSYNTH_OP_LAB_H */
