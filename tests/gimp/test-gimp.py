@@ -121,11 +121,12 @@ if tsops.check(os.path.isfile(render_a) and os.path.isfile(render_b),
                "render: two runs with the same seed exported"):
     _, _, a = tsops.load(render_a)
     _, _, b = tsops.load(render_b)
-    # Reported, not asserted: under heavy CPU load two runs in one GIMP
-    # session have been seen to differ although the ops are deterministic
-    # in the gegl tool (under investigation; see the GIMP 2.10 notes).
-    tsops.note("%s  render: same seed, same texture (max difference %g)"
-               % ("ok   " if tsops.max_abs_diff(a, b) == 0 else "NOTE ", tsops.max_abs_diff(a, b)))
+    # Each run is a plug-in process of its own; the ops convert the
+    # exemplar with fixed arithmetic, so only the last conversion to the
+    # 8-bit layer (babl's, whose paths may differ between processes) may
+    # round a value the other way. A different texture differs by ~0.9.
+    diff = tsops.max_abs_diff(a, b)
+    tsops.check(diff <= 1.5 / 255, "render: same seed, same texture (max difference %g)" % diff)
 
 r = fields(lines, "TSRESULT renderselection")
 tsops.check(r is not None and list(map(int, r[:2])) == [40, 30],
