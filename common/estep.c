@@ -170,9 +170,6 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         if (v.best_source != state->source[p])
           changed++;
         state->source[p] = v.best_source;
-        memcpy (ts_image_pixel (&state->output, x, (size_t) y),
-                state->exemplar->pixels + (size_t) v.best_source * TS_CHANNELS,
-                TS_CHANNELS * sizeof (float));
       }
   return changed;
 }

@@ -4,10 +4,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Densities of the opaque pixels of `image`, normalised so a uniform
- * histogram is 1 in every bin. */
+/* Densities of the opaque pixels of `image`, each counted `usage[i]`
+ * times (once if `usage` is NULL), normalised so a uniform histogram is 1
+ * in every bin. Counts are whole numbers, exact in float up to 2^24 (a
+ * 4096x4096 output) whatever the order of the sum. */
 static void
-count (const TsHistogram *h, const TsImage *image, float out[3][TS_HISTOGRAM_BINS])
+count (const TsHistogram *h, const TsImage *image, const uint32_t *usage,
+       float out[3][TS_HISTOGRAM_BINS])
 {
   size_t n = ts_image_pixel_count (image), used = 0;
 
@@ -15,11 +18,12 @@ count (const TsHistogram *h, const TsImage *image, float out[3][TS_HISTOGRAM_BIN
   for (size_t i = 0; i < n; i++)
     {
       const float *p = image->pixels + i * TS_CHANNELS;
-      if (p[3] <= 0.0f)
+      size_t times = usage ? usage[i] : 1;
+      if (p[3] <= 0.0f || times == 0)
         continue;
       for (int c = 0; c < 3; c++)
-        out[c][ts_histogram_bin (h, c, p[c])] += 1.0f;
-      used++;
+        out[c][ts_histogram_bin (h, c, p[c])] += (float) times;
+      used += times;
     }
   if (used == 0)
     return;
@@ -51,7 +55,7 @@ ts_histogram_init (TsHistogram *h, const TsImage *exemplar)
       h->lo[c] = lo[c] <= hi[c] ? lo[c] : 0.0f;
       h->scale[c] = (float) TS_HISTOGRAM_BINS / range;
     }
-  count (h, exemplar, h->exemplar);
+  count (h, exemplar, NULL, h->exemplar);
   memset (h->excess, 0, sizeof h->excess);
   h->source = exemplar;
   h->factor = malloc ((n ? n : 1) * sizeof (float));
@@ -70,11 +74,11 @@ ts_histogram_free (TsHistogram *h)
 }
 
 void
-ts_histogram_update (TsHistogram *h, const TsImage *output)
+ts_histogram_update (TsHistogram *h, const uint32_t *usage)
 {
   float density[3][TS_HISTOGRAM_BINS];
 
-  count (h, output, density);
+  count (h, h->source, usage, density);
   for (int c = 0; c < 3; c++)
     for (size_t b = 0; b < TS_HISTOGRAM_BINS; b++)
       {
@@ -83,6 +87,7 @@ ts_histogram_update (TsHistogram *h, const TsImage *output)
       }
   /* Per exemplar pixel once, instead of per vote. */
   size_t n = ts_image_pixel_count (h->source);
-  for (size_t i = 0; i < n; i++)
+#pragma omp parallel for schedule(static) if (n >= 65536)
+  for (ptrdiff_t i = 0; i < (ptrdiff_t) n; i++)
     h->factor[i] = ts_histogram_factor (h, h->source->pixels + i * TS_CHANNELS);
 }

@@ -22,9 +22,10 @@ typedef struct
 /* Bins from the exemplar's opaque pixels; keeps a pointer to it. */
 TsStatus ts_histogram_init (TsHistogram *histogram, const TsImage *exemplar);
 void     ts_histogram_free (TsHistogram *histogram);
-/* Recomputes the output side from the opaque pixels of `output`, and the
- * factor of every exemplar pixel. */
-void     ts_histogram_update (TsHistogram *histogram, const TsImage *output);
+/* Recomputes the output side from `usage` (how many output pixels copy
+ * each exemplar pixel; see ts_occurrence_count), and the factor of every
+ * exemplar pixel. */
+void     ts_histogram_update (TsHistogram *histogram, const uint32_t *usage);
 
 static inline size_t
 ts_histogram_bin (const TsHistogram *h, int channel, float v)

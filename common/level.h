@@ -16,8 +16,9 @@ typedef struct
   size_t                opaque_count;
   size_t                width, height; /* output size at this level          */
   bool                  wrap_x, wrap_y;
-  TsImage               output;     /* X: current output (working format)     */
-  int32_t              *source;     /* S: exemplar index of each output pixel */
+  int32_t              *source;     /* S: exemplar index of each output pixel; the
+                                       output X is never stored: its pixel p is
+                                       always exemplar pixel source[p] */
   const float          *preserve;   /* data-term weight per output pixel, or NULL */
   const int32_t        *preserve_source; /* exemplar index to keep, or NULL  */
   const float          *penalty;    /* occurrence penalty per exemplar centre, or NULL */

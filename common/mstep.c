@@ -15,13 +15,16 @@
 static void
 gather (const TsLevelState *state, ptrdiff_t cx, ptrdiff_t cy, size_t radius, float *out)
 {
+  const float *ex = state->exemplar->pixels;
+
   for (ptrdiff_t dy = -(ptrdiff_t) radius; dy <= (ptrdiff_t) radius; dy++)
     {
-      size_t y = ts_border_index (cy + dy, state->height, state->wrap_y);
+      const int32_t *row = state->source + ts_border_index (cy + dy, state->height, state->wrap_y)
+                           * state->width;
       for (ptrdiff_t dx = -(ptrdiff_t) radius; dx <= (ptrdiff_t) radius; dx++)
         {
           size_t x = ts_border_index (cx + dx, state->width, state->wrap_x);
-          memcpy (out, ts_image_pixel (&state->output, x, y), TS_CHANNELS * sizeof (float));
+          memcpy (out, ex + (size_t) row[x] * TS_CHANNELS, TS_CHANNELS * sizeof (float));
           out += TS_CHANNELS;
         }
     }

@@ -52,7 +52,16 @@ ts_occurrence_free (TsOccurrence *occ)
 }
 
 void
-ts_occurrence_update (TsOccurrence *occ, const int32_t *source, size_t count,
+ts_occurrence_count (const int32_t *source, size_t count, uint32_t *usage, size_t exemplar_pixels)
+{
+  memset (usage, 0, exemplar_pixels * sizeof (uint32_t));
+  for (size_t i = 0; i < count; i++)
+    if (source[i] >= 0)
+      usage[source[i]]++;
+}
+
+void
+ts_occurrence_update (TsOccurrence *occ, const uint32_t *usage, size_t count,
                       size_t patch, size_t opaque_pixels)
 {
   size_t w = occ->width, h = occ->height, stride = w + 1, r = patch / 2;
@@ -60,15 +69,20 @@ ts_occurrence_update (TsOccurrence *occ, const int32_t *source, size_t count,
   double expected = (double) count / (double) (opaque_pixels ? opaque_pixels : 1);
   float per_pixel = occ->scale * (float) (patch * patch);
 
-  /* Counts go into the table's interior, then become prefix sums. */
-  memset (sat, 0, stride * (h + 1) * sizeof (double));
-  for (size_t i = 0; i < count; i++)
-    if (source[i] >= 0)
-      sat[((size_t) source[i] / w + 1) * stride + (size_t) source[i] % w + 1] += 1.0;
+  /* Prefix sums along rows, then columns: the sums are whole numbers far
+   * below 2^53, so any order gives the same table. */
+  memset (sat, 0, stride * sizeof (double));
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t y = 0; y < (ptrdiff_t) h; y++)
+    {
+      double *row = sat + ((size_t) y + 1) * stride;
+      row[0] = 0.0;
+      for (size_t x = 0; x < w; x++)
+        row[x + 1] = row[x] + (double) usage[(size_t) y * w + x];
+    }
   for (size_t y = 1; y <= h; y++)
     for (size_t x = 1; x <= w; x++)
-      sat[y * stride + x] += sat[(y - 1) * stride + x] + sat[y * stride + x - 1]
-                             - sat[(y - 1) * stride + x - 1];
+      sat[y * stride + x] += sat[(y - 1) * stride + x];
 
 #pragma omp parallel for schedule(static)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) h; y++)

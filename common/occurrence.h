@@ -20,9 +20,16 @@ typedef struct
 TsStatus ts_occurrence_init (TsOccurrence *occ, const TsImage *exemplar, float strength);
 void     ts_occurrence_free (TsOccurrence *occ);
 
+/* How many of the `count` output pixels use each exemplar pixel as their
+ * source: `usage` gets one entry per exemplar pixel (`exemplar_pixels`).
+ * The one pass over the output that both the penalty and the histogram
+ * need. */
+void     ts_occurrence_count (const int32_t *source, size_t count, uint32_t *usage,
+                              size_t exemplar_pixels);
+
 /* Recomputes the penalty of every centre for neighbourhoods of side
- * `patch` from the current sources of `count` output pixels. */
-void     ts_occurrence_update (TsOccurrence *occ, const int32_t *source, size_t count,
+ * `patch` from the usage counts of `count` output pixels. */
+void     ts_occurrence_update (TsOccurrence *occ, const uint32_t *usage, size_t count,
                                size_t patch, size_t opaque_pixels);
 
 #endif

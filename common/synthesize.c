@@ -154,16 +154,6 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
       state->source[p] = state->preserve_source[p];
 }
 
-static void
-copy_sources_to_output (TsLevelState *state)
-{
-  size_t n = state->width * state->height;
-  for (size_t p = 0; p < n; p++)
-    memcpy (state->output.pixels + p * TS_CHANNELS,
-            state->exemplar->pixels + (size_t) state->source[p] * TS_CHANNELS,
-            TS_CHANNELS * sizeof (float));
-}
-
 /* All iterations of all passes of one level. */
 static TsStatus
 optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t level)
@@ -172,6 +162,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   size_t pixels = state->width * state->height;
   TsHistogram *histogram = NULL;
   TsOccurrence occurrence;
+  uint32_t *usage;
   TsStatus status;
   float occ_strength = TS_OCCURRENCE_STRENGTH;
   size_t free_pixels = pixels;
@@ -186,9 +177,15 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
         free_pixels += state->preserve[p] < 1.0f;
     }
 
+  usage = malloc (ts_image_pixel_count (state->exemplar) * sizeof (uint32_t));
+  if (!usage)
+    return TS_ERROR_OUT_OF_MEMORY;
   status = ts_occurrence_init (&occurrence, state->exemplar, occ_strength);
   if (status != TS_OK)
-    return status;
+    {
+      free (usage);
+      return status;
+    }
   state->penalty = occ_strength > 0.0f ? occurrence.penalty : NULL;
 
   if (params->histogram_matching)
@@ -200,6 +197,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
             ts_histogram_free (histogram);
           free (histogram);
           ts_occurrence_free (&occurrence);
+          free (usage);
           return TS_ERROR_OUT_OF_MEMORY;
         }
     }
@@ -228,9 +226,13 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
               ts_axis_grid_free (&gx);
               break;
             }
+          /* The M-step leaves the sources alone: one count serves the
+           * penalty now and the histogram after it. */
+          if (state->penalty || histogram)
+            ts_occurrence_count (state->source, pixels, usage,
+                                 ts_image_pixel_count (state->exemplar));
           if (state->penalty)
-            ts_occurrence_update (&occurrence, state->source, pixels, pass->patch,
-                                  state->opaque_count);
+            ts_occurrence_update (&occurrence, usage, pixels, pass->patch, state->opaque_count);
           matches = malloc (gx.centres * gy.centres * sizeof (TsMatch));
           status = matches ? ts_mstep (state, &gx, &gy, pass, plan->k_use, stream, matches)
                            : TS_ERROR_OUT_OF_MEMORY;
@@ -241,7 +243,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
           if (status == TS_OK)
             {
               if (histogram)
-                ts_histogram_update (histogram, &state->output);
+                ts_histogram_update (histogram, usage);
               changed = ts_estep (state, &gx, &gy, matches, histogram);
             }
           free (matches);
@@ -267,6 +269,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
     ts_histogram_free (histogram);
   free (histogram);
   ts_occurrence_free (&occurrence);
+  free (usage);
   state->penalty = NULL;
   return status;
 }
@@ -306,7 +309,6 @@ typedef struct
 static void
 work_free_level (Work *w)
 {
-  ts_image_free (&w->state.output);
   free (w->opaque);
   free (w->initial_source);
   free (w->initial_preserve);
@@ -336,9 +338,6 @@ place_tile_edges (TsLevelState *state)
   size_t sx, sy;
   TsStatus status = ts_seam_best_shift (state->disagreement, state->width, state->height,
                                         state->wrap_x, state->wrap_y, TS_SEAM_BAND, &sx, &sy);
-  if (status == TS_OK)
-    status = ts_seam_roll (state->output.pixels, state->width, state->height,
-                           TS_CHANNELS * sizeof (float), sx, sy);
   if (status == TS_OK)
     status = ts_seam_roll (state->source, state->width, state->height, sizeof (int32_t), sx, sy);
   return status;
@@ -373,8 +372,7 @@ synthesize_level (Run *run, Work *w, size_t level)
   state->height = level_side (params->output_height, level);
   state->wrap_x = params->wrap_x;
   state->wrap_y = params->wrap_y;
-  if ((status = list_opaque (ex, &w->opaque, &state->opaque_count)) != TS_OK ||
-      (status = ts_image_alloc (&state->output, state->width, state->height)) != TS_OK)
+  if ((status = list_opaque (ex, &w->opaque, &state->opaque_count)) != TS_OK)
     return status;
   state->opaque = w->opaque;
   if (state->opaque_count == 0)
@@ -393,7 +391,6 @@ synthesize_level (Run *run, Work *w, size_t level)
     }
   start_sources (state, params, level, plan.pass[0].patch, w->coarser_source, w->coarser_width,
                  w->coarser_ex_width);
-  copy_sources_to_output (state);
 
   if (level == 0 && (params->wrap_x || params->wrap_y) && !params->initial_source)
     {
@@ -427,13 +424,20 @@ write_result (const TsParams *params, const Work *w, TsImage *output)
   const TsImage *ex = &w->pyramid.level[0];
   size_t n = params->output_width * params->output_height;
 
-  ts_image_from_working (&w->state.output, output);
-  if (params->source_map)
-    for (size_t p = 0; p < n; p++)
-      {
-        params->source_map[2 * p] = (int32_t) ((size_t) w->coarser_source[p] % ex->width);
-        params->source_map[2 * p + 1] = (int32_t) ((size_t) w->coarser_source[p] / ex->width);
-      }
+  /* The result is the finest level's sources, looked up in the exemplar
+   * (alpha back to [0, 1] as ts_image_from_working does). */
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t p = 0; p < (ptrdiff_t) n; p++)
+    {
+      float *o = output->pixels + (size_t) p * TS_CHANNELS;
+      memcpy (o, ex->pixels + (size_t) w->coarser_source[p] * TS_CHANNELS, TS_CHANNELS * sizeof (float));
+      o[3] /= TS_ALPHA_SCALE;
+      if (params->source_map)
+        {
+          params->source_map[2 * p] = (int32_t) ((size_t) w->coarser_source[p] % ex->width);
+          params->source_map[2 * p + 1] = (int32_t) ((size_t) w->coarser_source[p] / ex->width);
+        }
+    }
 }
 
 TsStatus

@@ -185,7 +185,6 @@ test_estep (void)
   state.width = state.height = 6;
   state.wrap_x = state.wrap_y = true;
   state.source = sources;
-  CHECK (ts_image_alloc (&state.output, 6, 6) == TS_OK, "alloc");
   CHECK (ts_axis_grid_init (&gx, 6, 1, 1, 0, true) == TS_OK && gx.centres == 6, "grid x");
   CHECK (ts_axis_grid_init (&gy, 6, 1, 1, 0, true) == TS_OK && gy.centres == 6, "grid y");
   for (size_t y = 0; y < 6; y++)
@@ -215,11 +214,8 @@ test_estep (void)
     }
   ts_estep (&state, &gx, &gy, matches, NULL);
   CHECK (sources[2 * 6 + 2] == 7 * 12 + 7, "the heavy votes win: source %d", sources[2 * 6 + 2]);
-  CHECK (memcmp (ts_image_pixel (&state.output, 2, 2), ex.pixels + (7 * 12 + 7) * 4, 16) == 0,
-         "the pixel is the winning exemplar pixel");
   ts_axis_grid_free (&gx);
   ts_axis_grid_free (&gy);
-  ts_image_free (&state.output);
   free (ex.pixels);
 }
 
