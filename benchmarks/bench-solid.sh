@@ -9,7 +9,8 @@
 # which leaves GEGL's start-up, loading and PNG writing out. Peak memory
 # is the largest maximum resident set size (/usr/bin/time) of those runs,
 # and "extra" its excess over the trivial op's (GEGL alone takes a few
-# hundred MiB here, most of it before any pixel is processed).
+# hundred MiB here, most of it before any pixel is processed; the engine
+# alone is measured at the end with build/benchmarks/solid-memory).
 # GEGL_THREADS=1 throughout; OMP_NUM_THREADS varies.
 #
 # Usage: benchmarks/bench-solid.sh [-b BUILD_DIR] [-e EXEMPLAR_DIR]
@@ -118,3 +119,13 @@ for size in $sizes; do
       "$(echo "$(echo "${extras[$size,$t]}" | median) / 1024" | bc -l)"
   done
 done
+
+# GEGL's start-up alone peaks at a few hundred MiB of RSS here, which hides
+# the engine's own needs: measure those without GEGL too.
+if [ -x "$build/benchmarks/solid-memory" ]; then
+  echo
+  echo "# engine alone (build/benchmarks/solid-memory, generated 128x128 exemplar, OMP_NUM_THREADS=$(echo "$threads" | awk '{ print $NF }'))"
+  for size in $sizes; do
+    OMP_NUM_THREADS=$(echo "$threads" | awk '{ print $NF }') "$build/benchmarks/solid-memory" "$size" 128
+  done
+fi
