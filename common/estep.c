@@ -125,9 +125,10 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
 {
   size_t changed = 0;
 
+  /* A cancel is polled at the start of each row (x == 0). */
 #pragma omp parallel for schedule(static) reduction(+:changed)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
-    for (size_t x = 0; x < state->width; x++)
+    for (size_t x = 0; x < state->width && !(x == 0 && ts_cancel_poll (state->cancel)); x++)
       {
         size_t p = (size_t) y * state->width + x;
         Votes v;

@@ -4,6 +4,7 @@
 #ifndef TS_LEVEL_H
 #define TS_LEVEL_H
 
+#include "cancel.h"
 #include "histogram.h"
 #include "mrpm.h"
 #include "schedule.h"
@@ -24,6 +25,7 @@ typedef struct
   const float          *penalty;    /* occurrence penalty per exemplar centre, or NULL */
   float                *disagreement; /* if not NULL, the E-step stores each pixel's
                                          squared distance from its vote mean */
+  TsCancel             *cancel;     /* polled by both steps, or NULL        */
 } TsLevelState;
 
 /* Neighbourhood centres of one iteration along one axis, plus for every
@@ -85,13 +87,15 @@ ts_axis_grid_covering (const TsAxisGrid *g, ptrdiff_t t, size_t *lo, size_t *hi)
 
 /* M-step: for every centre of gx x gy, the best exemplar neighbourhood of
  * the k-coherence candidate set. `matches` has gx->centres * gy->centres
- * entries. Returns TS_OK or TS_ERROR_OUT_OF_MEMORY. */
+ * entries. Returns TS_OK, TS_ERROR_OUT_OF_MEMORY or TS_ERROR_CANCELLED
+ * (state->cancel raised; `matches` then incomplete). */
 TsStatus ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
                    const TsPass *pass, size_t k_use, uint32_t seed_stream, TsMatch *matches);
 
 /* E-step: every output pixel becomes the vote closest to the robust
  * weighted mean of all matched neighbourhoods covering it; its source
- * follows. Returns the number of pixels whose source changed. */
+ * follows. Returns the number of pixels whose source changed; if
+ * state->cancel is raised meanwhile, some rows are left as they were. */
 size_t   ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
                    const TsMatch *matches, const TsHistogram *histogram);
 

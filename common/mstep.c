@@ -111,7 +111,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         int stop;
 #pragma omp atomic read
         stop = failed;
-        if (stop)
+        if (stop || ts_cancel_poll (state->cancel))
           continue;
         size_t jx = (size_t) i % gx->centres, jy = (size_t) i / gx->centres;
         ptrdiff_t cx = ts_axis_grid_centre (gx, jx), cy = ts_axis_grid_centre (gy, jy);
@@ -136,5 +136,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
     free (neighbourhood);
     free (s.stamp);
   }
-  return failed ? TS_ERROR_OUT_OF_MEMORY : TS_OK;
+  if (failed)
+    return TS_ERROR_OUT_OF_MEMORY;
+  return ts_cancel_requested (state->cancel) ? TS_ERROR_CANCELLED : TS_OK;
 }

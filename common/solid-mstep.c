@@ -75,7 +75,7 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
 TsStatus
 ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const TsAxisGrid *gv,
                 const TsPass *pass, size_t k_use, uint32_t seed_stream, TsSolidMatch *matches,
-                const volatile int *cancel)
+                TsCancel *cancel)
 {
   const TsImage *ex = level->view[axis].exemplar;
   size_t n = level->n, cu = gu->centres, cv = gv->centres;
@@ -109,7 +109,7 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
         size_t t, ju, jv;
 #pragma omp atomic read
         stop = failed;
-        if (stop || (cancel && *cancel))
+        if (stop || ts_cancel_poll (cancel))
           continue;
         /* Inverse of ts_solid_match_index. */
         if (axis == 0)
@@ -138,5 +138,5 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
   }
   if (failed)
     return TS_ERROR_OUT_OF_MEMORY;
-  return cancel && *cancel ? TS_ERROR_CANCELLED : TS_OK;
+  return ts_cancel_requested (cancel) ? TS_ERROR_CANCELLED : TS_OK;
 }

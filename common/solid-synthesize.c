@@ -36,6 +36,7 @@ typedef struct
   void                *user_data;
   double               done, total;
   volatile int         cancel;
+  TsCancel             midway;  /* raised with `cancel`; lets the steps ask midway */
   Exemplar             exemplar[TS_SOLID_AXES];
   int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
   size_t               exemplars, levels;
@@ -49,8 +50,18 @@ report (Run *run, double units, const char *stage)
   run->done += units;
   if (run->progress && !run->progress (run->total > 0 ? fmin (1.0, run->done / run->total) : 1.0,
                                        stage, run->user_data))
-    run->cancel = 1;
+    {
+      run->cancel = 1;
+      ts_cancel_request (&run->midway);
+    }
   return !run->cancel;
+}
+
+/* Asked by OpenMP thread 0 (the caller's thread) from inside the M-step. */
+static bool
+report_midway (void *data)
+{
+  return report (data, 0.0, "optimizing volume");
 }
 
 static size_t
@@ -412,7 +423,7 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
         continue;
       it.matches[a] = malloc (n * it.gu.centres * it.gv.centres * sizeof (TsSolidMatch));
       status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, stream + (uint32_t) a,
-                                               it.matches[a], &run->cancel)
+                                               it.matches[a], &run->midway)
                              : TS_ERROR_OUT_OF_MEMORY;
       if (status == TS_OK && !report (run, share, "optimizing volume"))
         status = TS_ERROR_CANCELLED;
@@ -426,7 +437,7 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
       *changed += ts_solid_estep (l, &it.gu, &it.gv, it.matches, batch_of, b, histogram, delta);
       if (histogram)
         ts_solid_histogram_apply (histogram, delta);
-      if (run->cancel)
+      if (ts_cancel_poll (&run->midway))
         status = TS_ERROR_CANCELLED;
     }
   if (status == TS_OK && !report (run, share, "optimizing volume"))
@@ -519,6 +530,7 @@ ts_synthesize_solid (const TsSolidParams *params, const TsImage *const exemplars
   run.progress = progress;
   run.user_data = user_data;
   run.volume = volume;
+  ts_cancel_init (&run.midway, progress ? report_midway : NULL, &run);
   status = prepare_exemplars (&run, exemplars);
   if (status == TS_OK)
     {

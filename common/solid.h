@@ -70,7 +70,7 @@ ts_solid_match_index (int axis, size_t n, size_t cu, size_t cv, size_t t, size_t
 TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu,
                          const TsAxisGrid *gv, const TsPass *pass, size_t k_use,
                          uint32_t seed_stream, TsSolidMatch *matches,
-                         const volatile int *cancel);
+                         TsCancel *cancel);
 
 /* --- histogram matching --------------------------------------------------- */
 

@@ -24,6 +24,7 @@ typedef struct
   TsProgressFunc  progress;
   void           *user_data;
   double          done, total;   /* work units, for the progress fraction */
+  TsCancel        cancel;        /* lets the steps ask `progress` midway    */
 } Run;
 
 static bool
@@ -34,6 +35,13 @@ report (Run *run, double units, const char *stage)
     return true;
   return run->progress (run->total > 0 ? fmin (1.0, run->done / run->total) : 1.0, stage,
                         run->user_data);
+}
+
+/* Asked by OpenMP thread 0 (the caller's thread) from inside the steps. */
+static bool
+report_midway (void *data)
+{
+  return report (data, 0.0, "optimizing");
 }
 
 static size_t
@@ -245,6 +253,8 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
               if (histogram)
                 ts_histogram_update (histogram, usage);
               changed = ts_estep (state, &gx, &gy, matches, histogram);
+              if (ts_cancel_requested (state->cancel))
+                status = TS_ERROR_CANCELLED;
             }
           free (matches);
           ts_axis_grid_free (&gx);
@@ -372,6 +382,7 @@ synthesize_level (Run *run, Work *w, size_t level)
   state->height = level_side (params->output_height, level);
   state->wrap_x = params->wrap_x;
   state->wrap_y = params->wrap_y;
+  state->cancel = &run->cancel;
   if ((status = list_opaque (ex, &w->opaque, &state->opaque_count)) != TS_OK)
     return status;
   state->opaque = w->opaque;
@@ -444,9 +455,11 @@ TsStatus
 ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
                TsProgressFunc progress, void *user_data, TsError *error)
 {
-  Run run = { params, progress, user_data, 0, 0 };
+  Run run = { .params = params, .progress = progress, .user_data = user_data };
   Work w;
   TsStatus status;
+
+  ts_cancel_init (&run.cancel, progress ? report_midway : NULL, &run);
 
   status = ts_params_validate (params, exemplar, error);
   if (status != TS_OK)

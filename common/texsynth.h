@@ -217,7 +217,8 @@ TsStatus ts_solid_estimate_memory (const TsSolidParams *params,
                                    size_t *bytes, TsError *error);
 
 /* Synthesises a volume into `volume` (size^3 * TS_CHANNELS floats,
- * allocated by the caller); left untouched on failure. */
+ * allocated by the caller). The finest level is synthesised in place to
+ * save memory, so on failure or cancel its contents are unspecified. */
 TsStatus ts_synthesize_solid (const TsSolidParams *params,
                               const TsImage *const exemplars[3],
                               float *volume,
