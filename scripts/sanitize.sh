@@ -64,7 +64,7 @@ run_valgrind() {
   local log; log=$(mktemp)
   export TEXSYNTH_EXEMPLARS="${TEXSYNTH_EXEMPLARS:-$root/examples}" OMP_NUM_THREADS=2
   export GEGL_PATH; GEGL_PATH=$(ops_path build)
-  for cmd in "build/tests/reliability/test-bad-input" "build/tests/reliability/test-cancel 96" \
+  for cmd in "build/tests/reliability/test-bad-input" "build/tests/reliability/test-cancel 96 16" \
              "build/tests/engine/test-params" "build/tests/engine/test-pyramid"; do
     echo "-- $cmd"
     # shellcheck disable=SC2086
@@ -120,7 +120,9 @@ case $mode in
   asan) run_asan ;;
   valgrind) run_valgrind ;;
   tsan) run_tsan ;;
-  all) run_asan; run_valgrind; run_tsan ;;
+  all) for m in asan valgrind tsan; do
+         t=$SECONDS; "run_$m"; echo "sanitize.sh $m: passed in $((SECONDS - t)) s"
+       done ;;
   *) echo "usage: $0 [asan|valgrind|tsan|all]" >&2; exit 2 ;;
 esac
 echo "sanitize.sh $mode: passed in $((SECONDS - start)) s"
