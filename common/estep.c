@@ -126,7 +126,10 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
   size_t changed = 0;
 
   /* A cancel is polled at the start of each row (x == 0). */
-#pragma omp parallel for schedule(static) reduction(+:changed)
+  /* Dynamic rows: a thread the machine preempts holds up no barrier.
+   * Each pixel is computed by one thread alone, so any order gives the
+   * same result. */
+#pragma omp parallel for schedule(dynamic, 4) reduction(+:changed)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
     for (size_t x = 0; x < state->width && !(x == 0 && ts_cancel_poll (state->cancel)); x++)
       {

@@ -138,8 +138,9 @@ ts_mrpm_pca_basis (const TsMrpmFeature *f, const int32_t *list, size_t n, size_t
   for (int it = 0; it < PCA_ITERATIONS; it++)
     {
       /* Q <- X^T X Q, then orthonormalise (simultaneous iteration keeps
-       * the columns ordered by decreasing variance). Serial: too small to
-       * be worth the barriers. */
+       * the columns ordered by decreasing variance). Each entry is one
+       * thread's fixed-order sum: the same on any number of threads. */
+#pragma omp parallel for schedule(static)
       for (ptrdiff_t s = 0; s < (ptrdiff_t) S; s++)
         {
           double acc[MAX_PCA + PCA_OVERSAMPLE] = { 0 };
@@ -148,6 +149,7 @@ ts_mrpm_pca_basis (const TsMrpmFeature *f, const int32_t *list, size_t n, size_t
               acc[j] += X[(size_t) s * D + d] * Q[d * b + j];
           memcpy (Y + (size_t) s * b, acc, b * sizeof (double));
         }
+#pragma omp parallel for schedule(static)
       for (ptrdiff_t d = 0; d < (ptrdiff_t) D; d++)
         {
           double acc[MAX_PCA + PCA_OVERSAMPLE] = { 0 };

@@ -3,6 +3,9 @@
 
 #include <stdlib.h>
 #include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 TsStatus
 ts_occurrence_init (TsOccurrence *occ, const TsImage *ex, float strength)
@@ -54,10 +57,47 @@ ts_occurrence_free (TsOccurrence *occ)
 void
 ts_occurrence_count (const int32_t *source, size_t count, uint32_t *usage, size_t exemplar_pixels)
 {
-  memset (usage, 0, exemplar_pixels * sizeof (uint32_t));
-  for (size_t i = 0; i < count; i++)
-    if (source[i] >= 0)
-      usage[source[i]]++;
+  size_t threads = 1;
+  uint32_t *partial = NULL;
+
+#ifdef _OPENMP
+  threads = (size_t) omp_get_max_threads ();
+#endif
+  /* Per-thread counts, then their sums: whole numbers, so the same on any
+   * number of threads. Only worth it when the output is larger than the
+   * counts; serial without the memory. */
+  if (threads > 1 && exemplar_pixels * threads <= count)
+    partial = calloc (exemplar_pixels * threads, sizeof (uint32_t));
+  if (!partial)
+    {
+      memset (usage, 0, exemplar_pixels * sizeof (uint32_t));
+      for (size_t i = 0; i < count; i++)
+        if (source[i] >= 0)
+          usage[source[i]]++;
+      return;
+    }
+#pragma omp parallel num_threads ((int) threads)
+  {
+    size_t t = 0, n = threads;
+#ifdef _OPENMP
+    t = (size_t) omp_get_thread_num ();
+    n = (size_t) omp_get_num_threads ();
+#endif
+    uint32_t *mine = partial + t * exemplar_pixels;
+    for (size_t i = count * t / n; i < count * (t + 1) / n; i++)
+      if (source[i] >= 0)
+        mine[source[i]]++;
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (ptrdiff_t i = 0; i < (ptrdiff_t) exemplar_pixels; i++)
+      {
+        uint32_t sum = 0;
+        for (size_t u = 0; u < n; u++)
+          sum += partial[u * exemplar_pixels + (size_t) i];
+        usage[i] = sum;
+      }
+  }
+  free (partial);
 }
 
 void

@@ -111,15 +111,16 @@ random_blocks (TsLevelState *state, const TsParams *params, size_t level, size_t
   uint64_t jitter = ts_random (params->seed, (uint32_t) level, 0, 0, 4);
   size_t ox = (size_t) (jitter % block), oy = (size_t) ((jitter >> 32) % block);
 
-  for (size_t y = 0; y < state->height; y++)
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
     for (size_t x = 0; x < state->width; x++)
       {
-        size_t bx = (x + ox) / block, by = (y + oy) / block;
+        size_t bx = (x + ox) / block, by = ((size_t) y + oy) / block;
         uint64_t r = ts_random (params->seed, (uint32_t) level, 0, by * 65536 + bx, 1);
         int32_t corner = state->opaque[ts_random_below (r, state->opaque_count)];
         size_t sx = (size_t) corner % ex->width + (x + ox) % block;
-        size_t sy = (size_t) corner / ex->width + (y + oy) % block;
-        size_t p = y * state->width + x;
+        size_t sy = (size_t) corner / ex->width + ((size_t) y + oy) % block;
+        size_t p = (size_t) y * state->width + x;
         int32_t s;
 
         sx = sx < ex->width ? sx : ex->width - 1 - (sx - ex->width) % ex->width;
@@ -142,17 +143,21 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
 
   if (!coarser)
     random_blocks (state, params, level, block);
-  for (size_t y = 0; y < state->height && coarser; y++)
-    for (size_t x = 0; x < state->width; x++)
-      {
-        size_t p = y * state->width + x;
-        int32_t parent = coarser[(y / 2) * coarser_w + x / 2];
-        size_t sx = 2 * ((size_t) parent % coarser_ex_w) + (x & 1);
-        size_t sy = 2 * ((size_t) parent / coarser_ex_w) + (y & 1);
-        sx = sx < ex->width ? sx : ex->width - 1;
-        sy = sy < ex->height ? sy : ex->height - 1;
-        state->source[p] = (int32_t) (sy * ex->width + sx);
-      }
+  else
+    {
+#pragma omp parallel for schedule(static)
+      for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
+        for (size_t x = 0; x < state->width; x++)
+          {
+            size_t p = (size_t) y * state->width + x;
+            int32_t parent = coarser[((size_t) y / 2) * coarser_w + x / 2];
+            size_t sx = 2 * ((size_t) parent % coarser_ex_w) + (x & 1);
+            size_t sy = 2 * ((size_t) parent / coarser_ex_w) + ((size_t) y & 1);
+            sx = sx < ex->width ? sx : ex->width - 1;
+            sy = sy < ex->height ? sy : ex->height - 1;
+            state->source[p] = (int32_t) (sy * ex->width + sx);
+          }
+    }
   if (state->preserve_source && !coarser)
     memcpy (state->source, state->preserve_source, state->width * state->height * sizeof (int32_t));
   /* Fully preserved pixels start (and stay: the E-step skips them) at
