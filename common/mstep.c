@@ -16,7 +16,19 @@ static void
 gather (const TsLevelState *state, ptrdiff_t cx, ptrdiff_t cy, size_t radius, float *out)
 {
   const float *ex = state->exemplar->pixels;
+  ptrdiff_t r = (ptrdiff_t) radius;
 
+  if (cx >= r && cy >= r && cx + r < (ptrdiff_t) state->width && cy + r < (ptrdiff_t) state->height)
+    {
+      /* Inside: no border rule to apply. */
+      for (ptrdiff_t dy = -r; dy <= r; dy++)
+        {
+          const int32_t *row = state->source + (size_t) (cy + dy) * state->width + (size_t) (cx - r);
+          for (size_t i = 0; i < 2 * radius + 1; i++, out += TS_CHANNELS)
+            memcpy (out, ex + (size_t) row[i] * TS_CHANNELS, TS_CHANNELS * sizeof (float));
+        }
+      return;
+    }
   for (ptrdiff_t dy = -(ptrdiff_t) radius; dy <= (ptrdiff_t) radius; dy++)
     {
       const int32_t *row = state->source + ts_border_index (cy + dy, state->height, state->wrap_y)
@@ -45,9 +57,32 @@ frozen (const TsLevelState *state, ptrdiff_t cx, ptrdiff_t cy, size_t radius)
   return true;
 }
 
+/* ts_search_propose, unless this search has had the same proposal: in a
+ * coherent region all neighbours propose one centre, and a repeat would
+ * consider the same candidates in the same order, every one already
+ * seen. `proposed` holds the visit of each exemplar pixel's last proposal
+ * (cleared with the stamps when the visit counter wraps). */
+static inline void
+propose_once (TsSearch *s, uint32_t *proposed, const TsCandidateSet *cands, size_t k_use,
+              int32_t source, ptrdiff_t dx, ptrdiff_t dy)
+{
+  size_t w = s->exemplar->width, h = s->exemplar->height;
+  ptrdiff_t cx = (ptrdiff_t) ((size_t) source % w) - dx;
+  ptrdiff_t cy = (ptrdiff_t) ((size_t) source / w) - dy;
+
+  if (cx >= 0 && cy >= 0 && cx < (ptrdiff_t) w && cy < (ptrdiff_t) h)
+    {
+      uint32_t *mark = proposed + (size_t) cy * w + (size_t) cx;
+      if (*mark == s->visit)
+        return;
+      *mark = s->visit;
+    }
+  ts_search_propose (s, cands, k_use, source, dx, dy);
+}
+
 static void
-search_centre (TsSearch *s, const TsLevelState *state, const TsPass *pass, size_t k_use,
-               uint32_t seed_stream, ptrdiff_t cx, ptrdiff_t cy, size_t centre_index)
+search_centre (TsSearch *s, uint32_t *proposed, const TsLevelState *state, const TsPass *pass,
+               size_t k_use, uint32_t seed_stream, ptrdiff_t cx, ptrdiff_t cy, size_t centre_index)
 {
   ptrdiff_t r = (ptrdiff_t) s->radius, step = (ptrdiff_t) pass->propose_step;
   ptrdiff_t first = -(r / step) * step;
@@ -56,7 +91,7 @@ search_centre (TsSearch *s, const TsLevelState *state, const TsPass *pass, size_
   /* The centre's own source first: usually the best, so the early abort
    * of every later candidate has a tight bound. */
   if (state->source[own] >= 0)
-    ts_search_propose (s, state->candidates, k_use, state->source[own], 0, 0);
+    propose_once (s, proposed, state->candidates, k_use, state->source[own], 0, 0);
   for (ptrdiff_t dy = first; dy <= r; dy += step)
     {
       size_t y = ts_border_index (cy + dy, state->height, state->wrap_y);
@@ -65,7 +100,7 @@ search_centre (TsSearch *s, const TsLevelState *state, const TsPass *pass, size_
           size_t x = ts_border_index (cx + dx, state->width, state->wrap_x);
           int32_t source = state->source[y * state->width + x];
           if (source >= 0)
-            ts_search_propose (s, state->candidates, k_use, source, dx, dy);
+            propose_once (s, proposed, state->candidates, k_use, source, dx, dy);
         }
     }
   if (state->preserve_source)
@@ -98,8 +133,9 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
     TsSearch s = { ex, pass->patch, radius, NULL, state->penalty, NULL, 0, 0.0f, -1 };
     float *neighbourhood = malloc (pass->patch * pass->patch * TS_CHANNELS * sizeof (float));
     s.stamp = calloc (ex_pixels, sizeof (uint32_t));
+    uint32_t *proposed = calloc (ex_pixels, sizeof (uint32_t));
     s.neighbourhood = neighbourhood;
-    if (!neighbourhood || !s.stamp)
+    if (!neighbourhood || !s.stamp || !proposed)
       {
 #pragma omp atomic write
         failed = 1;
@@ -124,8 +160,10 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
             continue;
           }
         gather (state, cx, cy, radius, neighbourhood);
+        if (s.visit == UINT32_MAX)   /* ts_search_begin wraps it to 0 */
+          memset (proposed, 0, ex_pixels * sizeof (uint32_t));
         ts_search_begin (&s, ex_pixels);
-        search_centre (&s, state, pass, k_use, seed_stream, cx, cy, (size_t) i);
+        search_centre (&s, proposed, state, pass, k_use, seed_stream, cx, cy, (size_t) i);
         matches[i].centre = s.best_centre;
         matches[i].distance = s.best;
         /* |x - z|^(r-2) on the per-pixel RMS distance; the epsilon bounds
@@ -135,6 +173,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
       }
     free (neighbourhood);
     free (s.stamp);
+    free (proposed);
   }
   if (failed)
     return TS_ERROR_OUT_OF_MEMORY;
