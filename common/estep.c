@@ -80,12 +80,20 @@ add_vote (Votes *v, const TsImage *ex, int32_t source, float weight, bool any_al
     v->overflow = true;
 }
 
-static void
-collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
-         const TsMatch *matches, const TsHistogram *histogram, size_t px, size_t py)
+/* Every vote of the matched neighbourhoods covering (px, py), in a fixed
+ * order. First pass: weighted sums, kept in locals so they stay in
+ * registers (the same additions in the same order as one by one); second
+ * pass (`choosing`, only when the list overflowed): the vote nearest the
+ * mean. */
+static inline void
+collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+              const TsMatch *matches, const TsHistogram *histogram, size_t px, size_t py,
+              bool choosing)
 {
   const TsImage *ex = state->exemplar;
-  size_t ew = ex->width;
+  size_t ew = ex->width, count = v->count;
+  float s0 = v->sum[0], s1 = v->sum[1], s2 = v->sum[2], s3 = v->sum[3], total = v->weight;
+  bool overflow = v->overflow;
 
   for (size_t vy = gy->virtual_start[py]; vy < gy->virtual_start[py + 1]; vy++)
     {
@@ -102,21 +110,58 @@ collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxis
           for (size_t jy = jy_lo; jy <= jy_hi; jy++)
             {
               ptrdiff_t dy = ty - ts_axis_grid_centre (gy, jy);
+              const TsMatch *row = matches + jy * gx->centres;
               for (size_t jx = jx_lo; jx <= jx_hi; jx++)
                 {
-                  const TsMatch *m = &matches[jy * gx->centres + jx];
-                  if (m->centre < 0)
+                  if (row[jx].centre < 0)
                     continue;
                   ptrdiff_t dx = tx - ts_axis_grid_centre (gx, jx);
-                  int32_t source = m->centre + (int32_t) (dy * (ptrdiff_t) ew + dx);
-                  float weight = m->weight;
+                  int32_t source = row[jx].centre + (int32_t) (dy * (ptrdiff_t) ew + dx);
+                  const float *value = ex->pixels + (size_t) source * TS_CHANNELS;
+                  float weight = row[jx].weight;
                   if (histogram)
                     weight *= histogram->factor[source];
-                  add_vote (v, ex, source, weight, false);
+                  /* Matched neighbourhoods never vote for transparency. */
+                  if (value[3] <= 0.0f || !(weight > 0.0f))
+                    continue;
+                  if (choosing)
+                    {
+                      choose (v, value, source);
+                      continue;
+                    }
+                  s0 += weight * value[0];
+                  s1 += weight * value[1];
+                  s2 += weight * value[2];
+                  s3 += weight * value[3];
+                  total += weight;
+                  if (count < TS_LOCAL_VOTES)
+                    v->list[count++] = (Vote) { source, weight };
+                  else
+                    overflow = true;
                 }
             }
         }
     }
+  if (!choosing)
+    {
+      v->sum[0] = s0;
+      v->sum[1] = s1;
+      v->sum[2] = s2;
+      v->sum[3] = s3;
+      v->weight = total;
+      v->count = count;
+      v->overflow = overflow;
+    }
+}
+
+static void
+collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+         const TsMatch *matches, const TsHistogram *histogram, size_t px, size_t py)
+{
+  if (v->choosing)
+    collect_pass (v, state, gx, gy, matches, histogram, px, py, true);
+  else
+    collect_pass (v, state, gx, gy, matches, histogram, px, py, false);
 }
 
 size_t
