@@ -21,6 +21,13 @@
  * builds (scripts/sanitize.sh) run the engine about 10x slower: there
  * smaller runs check that a cancel frees everything. */
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define TEST_SANITIZED 1
+#elif defined(__has_feature) /* clang */
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define TEST_SANITIZED 1
+#endif
+#endif
+#ifdef TEST_SANITIZED
 #define LATENCY_BOUND_S 10.0
 #define DEFAULT_SIDE 256
 #define DEFAULT_SOLID_SIZE 32
