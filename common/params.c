@@ -92,9 +92,38 @@ exemplar_has_opaque_pixel (const TsImage *exemplar)
   return false;
 }
 
+TsStatus
+ts_validate_search_params (int quality, int patch_size, int max_iterations, TsError *error)
+{
+  if (quality < TS_MIN_QUALITY || quality > TS_MAX_QUALITY)
+    return ts_fail (error, TS_ERROR_BAD_PARAMETER, "quality must be %d to %d, got %d",
+                    TS_MIN_QUALITY, TS_MAX_QUALITY, quality);
+  if (patch_size != 0 &&
+      (patch_size < TS_MIN_PATCH_SIZE || patch_size > TS_MAX_PATCH_SIZE || patch_size % 2 == 0))
+    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
+                    "patch size must be 0 (automatic) or odd, %d to %d; got %d",
+                    TS_MIN_PATCH_SIZE, TS_MAX_PATCH_SIZE, patch_size);
+  if (max_iterations < 0 || max_iterations > TS_MAX_ITERATIONS)
+    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
+                    "iterations must be 0 (automatic) to %d, got %d",
+                    TS_MAX_ITERATIONS, max_iterations);
+  return TS_OK;
+}
+
+TsStatus
+ts_store_estimate (double estimate, size_t *bytes, TsError *error)
+{
+  if (!bytes)
+    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no place to store the estimate");
+  *bytes = estimate >= (double) SIZE_MAX ? SIZE_MAX : (size_t) estimate;
+  return TS_OK;
+}
+
 static TsStatus
 validate_without_memory (const TsParams *params, const TsImage *exemplar, TsError *error)
 {
+  TsStatus status;
+
   if (!params || !exemplar)
     return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no parameters or no exemplar given");
   if (exemplar->width == 0 || exemplar->height == 0 || !exemplar->pixels)
@@ -109,15 +138,10 @@ validate_without_memory (const TsParams *params, const TsImage *exemplar, TsErro
     return ts_fail (error, TS_ERROR_BAD_PARAMETER,
                     "the output size %zux%zu is out of range: width and height must be 1 to %d",
                     params->output_width, params->output_height, TS_MAX_OUTPUT_SIDE);
-  if (params->quality < TS_MIN_QUALITY || params->quality > TS_MAX_QUALITY)
-    return ts_fail (error, TS_ERROR_BAD_PARAMETER, "quality must be %d to %d, got %d",
-                    TS_MIN_QUALITY, TS_MAX_QUALITY, params->quality);
-  if (params->patch_size != 0 &&
-      (params->patch_size < TS_MIN_PATCH_SIZE || params->patch_size > TS_MAX_PATCH_SIZE ||
-       params->patch_size % 2 == 0))
-    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
-                    "patch size must be 0 (automatic) or odd, %d to %d; got %d",
-                    TS_MIN_PATCH_SIZE, TS_MAX_PATCH_SIZE, params->patch_size);
+  status = ts_validate_search_params (params->quality, params->patch_size, params->max_iterations,
+                                      error);
+  if (status != TS_OK)
+    return status;
   if (params->fine_patch_size != 0 &&
       (params->fine_patch_size < TS_MIN_PATCH_SIZE || params->fine_patch_size > TS_MAX_PATCH_SIZE ||
        params->fine_patch_size % 2 == 0))
@@ -128,10 +152,6 @@ validate_without_memory (const TsParams *params, const TsImage *exemplar, TsErro
     return ts_fail (error, TS_ERROR_BAD_PARAMETER,
                     "fine patch size (%d) must not exceed patch size (%d)",
                     params->fine_patch_size, params->patch_size);
-  if (params->max_iterations < 0 || params->max_iterations > TS_MAX_ITERATIONS)
-    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
-                    "iterations must be 0 (automatic) to %d, got %d",
-                    TS_MAX_ITERATIONS, params->max_iterations);
   if (params->preserve && !params->initial_source)
     return ts_fail (error, TS_ERROR_INVALID_ARGUMENT,
                     "preserve weights need an initial source map");
@@ -195,11 +215,8 @@ ts_estimate_memory (const TsParams *params, const TsImage *exemplar, size_t *byt
 
   if (status != TS_OK)
     return status;
-  if (!bytes)
-    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no place to store the estimate");
   estimate = estimate_bytes (params, exemplar, ts_schedule_threads ());
-  *bytes = estimate >= (double) SIZE_MAX ? SIZE_MAX : (size_t) estimate;
-  return TS_OK;
+  return ts_store_estimate (estimate, bytes, error);
 }
 
 TsStatus

@@ -37,6 +37,13 @@ size_t ts_schedule_levels (const TsImage *exemplar);
 void   ts_schedule_level (const TsParams *params, size_t level, size_t levels,
                           size_t ex_w, size_t ex_h, TsLevelPlan *plan);
 
+/* Range checks shared by every entry point: quality, the (large) patch
+ * size and the iteration limit. */
+TsStatus ts_validate_search_params (int quality, int patch_size, int max_iterations,
+                                    TsError *error);
+/* Stores a memory estimate in *bytes (saturating at SIZE_MAX). */
+TsStatus ts_store_estimate (double estimate, size_t *bytes, TsError *error);
+
 /* Sets error (if not NULL) and returns status; printf-style message. */
 TsStatus ts_fail (TsError *error, TsStatus status, const char *format, ...)
   __attribute__ ((format (printf, 3, 4)));

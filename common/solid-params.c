@@ -51,6 +51,7 @@ validate_without_memory (const TsSolidParams *params, const TsImage *const exemp
                          TsError *error)
 {
   int given = 0;
+  TsStatus status;
 
   if (!params || !exemplars)
     return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no parameters or no exemplars given");
@@ -58,23 +59,14 @@ validate_without_memory (const TsSolidParams *params, const TsImage *const exemp
     return ts_fail (error, TS_ERROR_BAD_PARAMETER,
                     "the volume size must be %d to %d voxels, got %zu",
                     TS_SOLID_MIN_SIZE, TS_SOLID_MAX_SIZE, params->size);
-  if (params->quality < TS_MIN_QUALITY || params->quality > TS_MAX_QUALITY)
-    return ts_fail (error, TS_ERROR_BAD_PARAMETER, "quality must be %d to %d, got %d",
-                    TS_MIN_QUALITY, TS_MAX_QUALITY, params->quality);
-  if (params->patch_size != 0 &&
-      (params->patch_size < TS_MIN_PATCH_SIZE || params->patch_size > TS_MAX_PATCH_SIZE ||
-       params->patch_size % 2 == 0))
-    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
-                    "patch size must be 0 (automatic) or odd, %d to %d; got %d",
-                    TS_MIN_PATCH_SIZE, TS_MAX_PATCH_SIZE, params->patch_size);
-  if (params->max_iterations < 0 || params->max_iterations > TS_MAX_ITERATIONS)
-    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
-                    "iterations must be 0 (automatic) to %d, got %d",
-                    TS_MAX_ITERATIONS, params->max_iterations);
+  status = ts_validate_search_params (params->quality, params->patch_size, params->max_iterations,
+                                      error);
+  if (status != TS_OK)
+    return status;
   for (int a = 0; a < 3; a++)
     if (exemplars[a])
       {
-        TsStatus status = check_exemplar (exemplars[a], a, error);
+        status = check_exemplar (exemplars[a], a, error);
         if (status != TS_OK)
           return status;
         given++;
@@ -118,11 +110,8 @@ ts_solid_estimate_memory (const TsSolidParams *params, const TsImage *const exem
 
   if (status != TS_OK)
     return status;
-  if (!bytes)
-    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no place to store the estimate");
   estimate = estimate_bytes (params, exemplars, ts_schedule_threads ());
-  *bytes = estimate >= (double) SIZE_MAX ? SIZE_MAX : (size_t) estimate;
-  return TS_OK;
+  return ts_store_estimate (estimate, bytes, error);
 }
 
 TsStatus
