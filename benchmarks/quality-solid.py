@@ -17,12 +17,10 @@
 
 import argparse
 import glob
-import json
 import math
 import os
 import statistics
 import struct
-import subprocess
 import sys
 import time
 
@@ -46,11 +44,7 @@ if args.only:
 
 
 def measure(exemplar, result, tileable):
-    cmd = [args.measure, "--json"] + (["--tileable"] if tileable else []) + [exemplar, result]
-    proc = subprocess.run(cmd, capture_output=True, text=True)
-    if proc.returncode != 0:
-        tsops.die("%s failed:\n%s%s" % (" ".join(cmd), proc.stdout, proc.stderr))
-    return json.loads(proc.stdout)
+    return tsops.run_measure(args.measure, exemplar, result, tileable)
 
 
 def read_vol(path):

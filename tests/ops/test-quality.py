@@ -8,10 +8,8 @@
 
 import argparse
 import glob
-import json
 import os
 import statistics
-import subprocess
 import time
 
 import tsops
@@ -52,20 +50,7 @@ if not exemplars:
 
 
 def measure(exemplar, result, tileable):
-    cmd = [args.measure, "--json"] + (["--tileable"] if tileable else []) + [exemplar, result]
-    proc = subprocess.run(cmd, capture_output=True, text=True)
-    if proc.returncode != 0:
-        tsops.die("%s failed:\n%s%s" % (" ".join(cmd), proc.stdout, proc.stderr))
-    text = proc.stdout.strip()
-    try:
-        values = json.loads(text if text.startswith("{") else "{%s}" % text)
-    except ValueError:
-        values = {}
-        for line in text.splitlines():
-            key, _, value = line.partition(":")
-            values[key.strip()] = float(value)
-    return {k: (float("nan") if v is None else float(v)) for k, v in values.items()
-            if v is None or isinstance(v, (int, float))}
+    return tsops.run_measure(args.measure, exemplar, result, tileable)
 
 
 def synthesize(exemplar, name, tileable):

@@ -5,6 +5,7 @@
 # Gegl typelib, which images are read and written with.
 
 import atexit
+import json
 import os
 import shutil
 import struct
@@ -224,3 +225,17 @@ def wrap_seam_excess(w, h, px):
 
     return (excess(w, h, lambda a, b, y: (a, y, b, y)),
             excess(h, w, lambda a, b, x: (x, a, x, b)))
+
+
+# --- texsynth-measure -----------------------------------------------------------
+
+def run_measure(measure_path, exemplar, result, tileable=False):
+    """texsynth-measure --json [--tileable] EXEMPLAR RESULT as a dict of
+    floats (NaN for null)."""
+    cmd = [measure_path, "--json"] + (["--tileable"] if tileable else []) + [exemplar, result]
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode != 0:
+        die("%s failed:\n%s%s" % (" ".join(cmd), proc.stdout, proc.stderr))
+    values = json.loads(proc.stdout)
+    return {k: (float("nan") if v is None else float(v)) for k, v in values.items()
+            if v is None or isinstance(v, (int, float))}
