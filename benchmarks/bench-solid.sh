@@ -21,6 +21,7 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")/.." && pwd)
+. "$here/benchmarks/bench-lib.sh"
 build="$here/build"
 exemplars="$here/../shared/exemplars"
 [ -d "$exemplars" ] || exemplars="$here/examples"
@@ -57,7 +58,6 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 # Runs gegl ARGS... RUNS times; prints "median_seconds peak_kib".
 measure() {
@@ -82,18 +82,7 @@ else
   files=("$exemplars"/*.png)
 fi
 if [ "$crop" -gt 0 ]; then
-  cropped=()
-  for ex in "${files[@]}"; do
-    # PNG width and height: big-endian 32-bit at bytes 16 and 20.
-    read -r w h < <(od -An -tu1 -j16 -N8 "$ex" |
-      awk '{ print ($1 * 2^24 + $2 * 2^16 + $3 * 256 + $4), ($5 * 2^24 + $6 * 2^16 + $7 * 256 + $8) }')
-    [ "${w:-0}" -ge "$crop" ] && [ "${h:-0}" -ge "$crop" ] || continue
-    out="$tmp/$(basename "$ex")"
-    gegl -i "$ex" -o "$out" -- gegl:crop x=$(( (w - crop) / 2 )) y=$(( (h - crop) / 2 )) \
-      width="$crop" height="$crop" >/dev/null 2>&1
-    cropped+=("$out")
-  done
-  files=("${cropped[@]}")
+  mapfile -t files < <(crop_central "$crop" "$tmp" "${files[@]}")
 fi
 
 echo "# texsynth solid synthesis, $(date -u +%Y-%m-%d), $(nproc) cores, $runs runs, GEGL_THREADS=1"

@@ -19,6 +19,7 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")/.." && pwd)
+. "$here/benchmarks/bench-lib.sh"
 build="$here/build"
 exemplars="$here/../shared/exemplars"
 [ -d "$exemplars" ] || exemplars="$here/examples"
@@ -62,7 +63,7 @@ median_time() {
     env $run_env gegl "$@" >/dev/null 2>"$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
     end=$(date +%s.%N)
     echo "$end - $start" | bc -l
-  done | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+  done | median
 }
 
 files=()
@@ -72,18 +73,7 @@ else
   files=("$exemplars"/*.png)
 fi
 if [ -n "$crop" ]; then
-  cropped=()
-  for ex in "${files[@]}"; do
-    # PNG width and height: big-endian 32-bit at bytes 16 and 20.
-    read -r w h < <(od -An -tu1 -j16 -N8 "$ex" |
-      awk '{ print ($1 * 2^24 + $2 * 2^16 + $3 * 256 + $4), ($5 * 2^24 + $6 * 2^16 + $7 * 256 + $8) }')
-    [ "${w:-0}" -ge "$crop" ] && [ "${h:-0}" -ge "$crop" ] || continue
-    out="$tmp/$(basename "$ex")"
-    gegl -i "$ex" -o "$out" -- gegl:crop x=$(( (w - crop) / 2 )) y=$(( (h - crop) / 2 )) \
-      width="$crop" height="$crop" >/dev/null 2>&1
-    cropped+=("$out")
-  done
-  files=("${cropped[@]}")
+  mapfile -t files < <(crop_central "$crop" "$tmp" "${files[@]}")
 fi
 
 printf '%-12s %9s' exemplar size
@@ -91,7 +81,6 @@ for t in $threads; do printf ' %9s' "${t}thr(s)"; done
 printf ' %8s\n' speed-up
 declare -A total
 declare -A all
-median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 for size in $sizes; do
   for ex in "${files[@]}"; do
     name=$(basename "$ex" .png)

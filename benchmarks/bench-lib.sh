@@ -1,0 +1,31 @@
+# Shell helpers shared by the benchmark scripts (sourced, not run).
+# SPDX-License-Identifier: LGPL-3.0-or-later
+
+# Median of the numbers on standard input (space or newline separated);
+# "nan" for none.
+median() {
+  tr ' ' '\n' | grep . | sort -g |
+    awk '{ v[NR] = $1 } END { if (NR == 0) print "nan"; else print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
+
+# png_size FILE: prints "width height" (big-endian 32-bit at bytes 16, 20).
+png_size() {
+  od -An -tu1 -j16 -N8 "$1" |
+    awk '{ print ($1 * 2^24 + $2 * 2^16 + $3 * 256 + $4), ($5 * 2^24 + $6 * 2^16 + $7 * 256 + $8) }'
+}
+
+# crop_central SIDE DIR FILE...: writes the SIDE x SIDE central crop of
+# every FILE at least that large into DIR (same name) and prints the new
+# paths, one a line; smaller files are skipped.
+crop_central() {
+  local side=$1 dir=$2 ex w h out
+  shift 2
+  for ex in "$@"; do
+    read -r w h < <(png_size "$ex")
+    [ "${w:-0}" -ge "$side" ] && [ "${h:-0}" -ge "$side" ] || continue
+    out="$dir/$(basename "$ex")"
+    gegl -i "$ex" -o "$out" -- gegl:crop x=$(( (w - side) / 2 )) y=$(( (h - side) / 2 )) \
+      width="$side" height="$side" >/dev/null 2>&1
+    echo "$out"
+  done
+}
