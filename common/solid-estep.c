@@ -173,7 +173,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
 {
   size_t n = level->n, changed = 0;
 
-#pragma omp parallel reduction(+:changed)
+#pragma omp parallel reduction(+:changed) if (n >= TS_SOLID_PARALLEL_EDGE)
   {
     TsSolidHistogramDelta local;
     Votes v;

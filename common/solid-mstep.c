@@ -90,7 +90,7 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
   plane.stride_v = ts_solid_stride (n, v_axis);
   plane.stride_t = ts_solid_stride (n, axis);
 
-#pragma omp parallel
+#pragma omp parallel if (n >= TS_SOLID_PARALLEL_EDGE)
   {
     TsSearch s = { ex, pass->patch, radius, NULL, NULL, NULL, 0, 0.0f, -1 };
     float *neighbourhood = malloc (pass->patch * pass->patch * TS_CHANNELS * sizeof (float));

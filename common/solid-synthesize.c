@@ -39,7 +39,10 @@ typedef struct
   TsCancel             midway;  /* raised with `cancel`; lets the steps ask midway */
   Exemplar             exemplar[TS_SOLID_AXES];
   int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
-  size_t               exemplars, levels;
+  size_t               exemplars;
+  size_t               levels;      /* volume levels synthesised           */
+  size_t               ex_levels;   /* exemplar levels (>= levels): the
+                                       coarser ones only seed MRPM        */
   TsSolidLevel         level, coarser;
   float               *volume;                     /* the caller's: finest values */
 } Run;
@@ -170,6 +173,7 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
       size_t d = ts_schedule_levels (run->exemplar[e].input);
       levels = d < levels ? d : levels;
     }
+  run->ex_levels = levels;
   while (levels > 1 && level_edge (run->params->size, levels - 1) < TS_SOLID_COARSEST_EDGE)
     levels--;
   run->levels = levels;
@@ -178,7 +182,7 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
       Exemplar *ex = &run->exemplar[e];
       TsStatus status = ts_image_to_working (ex->input, &ex->working);
       if (status == TS_OK)
-        status = ts_pyramid_build (&ex->working, levels, &ex->pyramid);
+        status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
       if (status != TS_OK)
         return status;
     }
@@ -199,11 +203,19 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       const TsImage *img = &ex->pyramid.level[level];
       size_t pixels = ts_image_pixel_count (img);
       TsStatus status = ts_mrpm_level (&ex->pyramid, level,
-                                       level + 1 < run->levels ? &ex->coarser_candidates : NULL,
+                                       level + 1 < run->ex_levels ? &ex->coarser_candidates : NULL,
                                        plan->k_level, &options, &run->cancel, &ex->candidates);
       if (status != TS_OK)
         return status;
       ts_candidate_set_free (&ex->coarser_candidates);
+      if (level >= run->levels)
+        {
+          /* Too coarse for the volume: its candidates only seed the next
+           * level's MRPM, which would otherwise search by brute force. */
+          ex->coarser_candidates = ex->candidates;
+          memset (&ex->candidates, 0, sizeof ex->candidates);
+          continue;
+        }
       free (ex->opaque);
       free (ex->factor);
       ex->opaque = malloc (pixels * sizeof (int32_t));
@@ -316,7 +328,7 @@ start_random_blocks (Run *run, size_t level, size_t block)
   size_t n = l->n;
   uint32_t seed = run->params->seed;
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
   for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
     for (size_t x = 0; x < n; x++)
       {
@@ -349,7 +361,7 @@ start_from_coarser (Run *run, size_t level)
   size_t n = l->n, cn = c->n;
   uint32_t seed = run->params->seed;
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
   for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
     for (size_t x = 0; x < n; x++)
       {
@@ -375,7 +387,7 @@ start_from_coarser (Run *run, size_t level)
 static void
 assign_batches (uint8_t *batch_of, size_t voxels, uint32_t seed, uint32_t stream)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (voxels >= TS_SOLID_PARALLEL_EDGE * TS_SOLID_PARALLEL_EDGE * TS_SOLID_PARALLEL_EDGE)
   for (ptrdiff_t p = 0; p < (ptrdiff_t) voxels; p++)
     batch_of[p] = (uint8_t) ts_random_below (ts_random (seed, stream, 0, (uint64_t) p, 9),
                                              TS_SOLID_BATCHES);
@@ -535,6 +547,12 @@ ts_synthesize_solid (const TsSolidParams *params, const TsImage *const exemplars
   if (status == TS_OK)
     {
       run.total = planned_work (&run);
+      for (size_t l = run.ex_levels; l-- > run.levels && status == TS_OK;)
+        {
+          TsLevelPlan plan;
+          plan_level (&run, l, &plan);
+          status = prepare_views (&run, l, &plan);
+        }
       for (size_t l = run.levels; l-- > 0 && status == TS_OK;)
         status = synthesize_level (&run, l);
     }

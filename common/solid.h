@@ -12,6 +12,9 @@
 /* The E-step visits voxels in this many random batches, refreshing the
  * histogram weights between them. */
 #define TS_SOLID_BATCHES 16
+/* Below this edge a level's loops run on one thread: the work is too
+ * small to repay waking the others, above all on a busy machine. */
+#define TS_SOLID_PARALLEL_EDGE 32
 
 /* One slice orientation at one level. */
 typedef struct
