@@ -190,7 +190,8 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
 }
 
 /* Candidate sets, opaque lists and histogram factors of every exemplar at
- * `level`, and the views that point at them. */
+ * `level`, and the views that point at them; only the candidate sets at
+ * levels coarser than the volume's coarsest. */
 static TsStatus
 prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
 {
@@ -232,6 +233,8 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       if (ex->opaque_count == 0)
         return TS_ERROR_TRANSPARENT_EXEMPLAR;
     }
+  if (level >= run->levels)
+    return TS_OK;
   for (int a = 0; a < TS_SOLID_AXES; a++)
     {
       TsSolidView *view = &run->level.view[a];
