@@ -19,6 +19,10 @@ import sys
 import tempfile
 from xml.sax.saxutils import escape, quoteattr
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "ops"))
+import tsops  # noqa: E402
+from tsops import check, die, exemplar, finish, load, note, save_buffer  # noqa: E402
+
 OP = "texsynth:tileable"
 PREFIX = OP + ": "
 SEAM_MAX = 1.10
@@ -29,40 +33,12 @@ parser.add_argument("--measure", required=True, help="path of texsynth-measure")
 parser.add_argument("--keep", help="keep the images in this folder")
 args = parser.parse_args()
 
-failures = []
-
-
-def note(message):
-    print(message, flush=True)
-
-
-def check(condition, message):
-    note(("ok    " if condition else "FAIL  ") + message)
-    if not condition:
-        failures.append(message)
-    return condition
-
-
-def die(message):
-    note("ERROR: " + message)
-    sys.exit(1)
-
-
-try:
-    import gi
-    gi.require_version("Gegl", "0.4")
-    from gi.repository import Gegl
-except (ImportError, ValueError) as error:
-    die("PyGObject with the Gegl 0.4 typelib is needed (python3-gi, gir1.2-gegl-0.4; "
-        "run with /usr/bin/python3): %s" % error)
-Gegl.init(None)
+Gegl = tsops.gegl()
 
 tmp = args.keep or tempfile.mkdtemp(prefix="texsynth-tileable-")
 os.makedirs(tmp, exist_ok=True)
 if not args.keep:
     atexit.register(shutil.rmtree, tmp, True)
-exemplars = os.environ.get("TEXSYNTH_EXEMPLARS") or os.path.join(
-    os.environ.get("TEXSYNTH_SOURCE_ROOT", "."), "examples")
 gegl_tool = os.environ.get("TEXSYNTH_GEGL") or shutil.which("gegl")
 if not gegl_tool:
     die("the gegl command-line tool is not installed")
@@ -70,13 +46,6 @@ if not gegl_tool:
 
 def path(name):
     return os.path.join(tmp, name)
-
-
-def exemplar(name):
-    p = os.path.join(exemplars, name)
-    if not os.path.isfile(p):
-        die("exemplar %s not found in %s" % (name, exemplars))
-    return p
 
 
 def gegl(*argv):
@@ -95,32 +64,10 @@ def tileable(src, dst, *props):
     return warnings
 
 
-def load(p, fmt="R'G'B'A float"):
-    """(width, height, floats) of an image file."""
-    graph = Gegl.Node()
-    node = graph.create_child("gegl:load")
-    node.set_property("path", p)
-    box = node.get_bounding_box()
-    buf = Gegl.Buffer.new(fmt, box.x, box.y, box.width, box.height)
-    sink = graph.create_child("gegl:write-buffer")
-    sink.set_property("buffer", buf)
-    node.connect_to("output", sink, "input")
-    sink.process()
-    data = bytes(buf.get(box, 1.0, fmt, Gegl.AbyssPolicy.NONE))
-    return box.width, box.height, struct.unpack("%df" % (len(data) // 4), data)
-
-
 def save(p, w, h, px, fmt="R'G'B'A float", bitdepth=8):
     buf = Gegl.Buffer.new(fmt, 0, 0, w, h)
     buf.set(Gegl.Rectangle.new(0, 0, w, h), fmt, struct.pack("%df" % len(px), *px))
-    graph = Gegl.Node()
-    source = graph.create_child("gegl:buffer-source")
-    source.set_property("buffer", buf)
-    sink = graph.create_child("gegl:png-save")
-    sink.set_property("path", p)
-    sink.set_property("bitdepth", bitdepth)
-    source.connect_to("output", sink, "input")
-    sink.process()
+    save_buffer(buf, p, bitdepth)
 
 
 def measure(ex, result, tileable="--tileable"):
@@ -236,7 +183,7 @@ for direction, wrapped, kept in (("horizontal", "x", "y"), ("vertical", "y", "x"
 
 note("-- every exemplar size, formats")
 for name in ("rock.png", "granite1.png", "leopard.png"):   # non-square, grey, odd size
-    if not os.path.isfile(os.path.join(exemplars, name)):
+    if not os.path.isfile(os.path.join(tsops.exemplars_dir(), name)):
         note("skip  %s is not among the exemplars" % name)
         continue
     res = path("t-" + name)
@@ -316,9 +263,4 @@ res = path("strip-out.png")
 warnings = tileable(strip, res, "direction=horizontal")
 check(not warnings and load(res)[:2] == (64, 5), "64x5 horizontally only: fine")
 
-if failures:
-    note("\n%d check(s) failed:" % len(failures))
-    for message in failures:
-        note("  - " + message)
-    sys.exit(1)
-note("\nall checks passed")
+finish()
