@@ -45,6 +45,7 @@ typedef struct
   double        last_call, max_gap;
   int           calls;
   int           permille_target;
+  bool          waited;        /* the callback has waited for the cancel */
 } Shared;
 
 static double
@@ -65,11 +66,24 @@ on_progress (double fraction, const char *stage, void *data)
     s->max_gap = t - s->last_call;
   s->last_call = t;
   atomic_store (&s->progress_permille, (int) (fraction * 1000.0));
+  /* Past the target, wait for the other thread's cancel (a scheduler or
+   * valgrind's one-thread-at-a-time may otherwise never run it before the
+   * synthesis ends), then still say "go on" this once: the engine must
+   * see the cancel at a later call, the worst case the latency covers. */
+  if (s->permille_target <= (int) (fraction * 1000.0) && !s->waited)
+    {
+      struct timespec ms = { 0, 1000000 };
+      s->waited = true;
+      for (int i = 0; i < 60000 && !atomic_load (&s->cancel); i++)
+        nanosleep (&ms, NULL);
+      return true;
+    }
   return !atomic_load (&s->cancel);
 }
 
 /* Waits until the synthesis has passed the target progress, then cancels
- * at once: right after a progress call, the worst moment. */
+ * at once, while the callback that reached it waits: right after a
+ * progress call, the worst moment. */
 static void *
 canceller (void *data)
 {
