@@ -200,8 +200,15 @@ estimate_bytes (const TsParams *params, const TsImage *exemplar, int threads)
   bytes += pyramid_bytes (ex, 16.0);                   /* working exemplar pyramid */
   bytes += 2.0 * ex * (k * 4.0 + 16.0);                /* two candidate levels + MRPM features */
   bytes += (double) threads * ex * 4.0;                /* dedup stamps */
-  bytes += 2.0 * out * (16.0 + 4.0 + 4.0);             /* two levels of output, sources, votes */
-  bytes += out * 16.0;                                 /* the converted result */
+  /* Per output pixel, measured ~21 B at 4096x4096 (benchmarks in the
+   * README): the caller's result (16), sources (4), the coarser level's
+   * sources (1) and sparse matches (2), and the host's converted copy of
+   * the result (16, the ops' GEGL buffer). */
+  bytes += out * (16.0 + 4.0 + 1.0 + 2.0 + 16.0);
+  if (params->wrap_x || params->wrap_y)
+    bytes += out * 4.0;                                /* seam disagreement   */
+  if (params->source_map)
+    bytes += out * 8.0;
   if (params->initial_source)
     bytes += pyramid_bytes (out, 8.0 + 4.0);
   return bytes + 16.0 * 1024 * 1024;                   /* fixed overhead */

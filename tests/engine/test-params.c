@@ -69,7 +69,7 @@ main (void)
   CHECK (ts_estimate_memory (&p, &exemplar, &small, NULL) == TS_OK, "estimate");
   p.output_width = p.output_height = 4096;
   CHECK (ts_estimate_memory (&p, &exemplar, &large, NULL) == TS_OK, "estimate");
-  CHECK (large > small * 16 && large > (size_t) 4096 * 4096 * 40, "estimate grows: %zu %zu", small, large);
+  CHECK (large > small * 12 && large > (size_t) 4096 * 4096 * 32, "estimate grows: %zu %zu", small, large);
   p.memory_limit = (size_t) 64 << 20;
   expect (&p, &exemplar, TS_ERROR_TOO_LARGE, "MiB");
 

@@ -219,9 +219,39 @@ test_estep (void)
   free (ex.pixels);
 }
 
+/* Peak memory of a 1024x1024 synthesis stays within its estimate. */
+static void
+test_memory_bound (void)
+{
+  TsImage ex, out = { 1024, 1024, NULL };
+  TsParams p;
+  TsError error;
+  size_t bytes = 0;
+  long before, after;
+  double grew;
+
+  test_noise_image (&ex, 128, 128, 3);
+  ts_params_init (&p);
+  p.output_width = out.width;
+  p.output_height = out.height;
+  CHECK (ts_estimate_memory (&p, &ex, &bytes, NULL) == TS_OK, "estimate");
+  before = test_peak_rss_kib ();
+  out.pixels = malloc (out.width * out.height * TS_CHANNELS * sizeof (float));
+  CHECK (out.pixels && ts_synthesize (&p, &ex, &out, NULL, NULL, &error) == TS_OK, "1024x1024 synthesis");
+  after = test_peak_rss_kib ();
+  grew = (double) (after - before) * 1024.0;
+  printf ("1024x1024: peak grew by %.1f MiB, estimate %.1f MiB\n", grew / 1048576.0,
+          (double) bytes / 1048576.0);
+  CHECK (grew <= (double) bytes, "peak growth %.1f MiB within the estimate %.1f MiB",
+         grew / 1048576.0, (double) bytes / 1048576.0);
+  free (out.pixels);
+  free (ex.pixels);
+}
+
 int
 main (void)
 {
+  test_memory_bound ();   /* first: the process's peak is lowest here */
   test_estep ();
   test_exact_and_deterministic ();
   test_transparent_never_used ();

@@ -28,4 +28,8 @@ void test_load_exemplar (const char *name, TsImage *image);
 /* Deterministic smooth-noise Lab image, opaque. */
 void test_noise_image (TsImage *image, size_t width, size_t height, unsigned seed);
 
+/* The process's peak resident set size so far, in KiB: a synthesis's
+ * memory is the growth of this across it, taken before larger runs. */
+long test_peak_rss_kib (void);
+
 #endif

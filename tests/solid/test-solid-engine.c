@@ -331,14 +331,6 @@ test_cancel (void)
   free (ex.pixels);
 }
 
-static long
-peak_rss_kib (void)
-{
-  struct rusage usage;
-  getrusage (RUSAGE_SELF, &usage);
-  return usage.ru_maxrss;
-}
-
 /* Peak memory of a 64^3 synthesis stays within its estimate. */
 static void
 test_memory_bound (void)
@@ -354,9 +346,9 @@ test_memory_bound (void)
   ts_solid_params_init (&p);
   p.size = 64;
   ts_solid_estimate_memory (&p, all, &bytes, NULL);
-  before = peak_rss_kib ();
+  before = test_peak_rss_kib ();
   CHECK (run (all, &p, &v, NULL) == TS_OK, "64^3 synthesis");
-  after = peak_rss_kib ();
+  after = test_peak_rss_kib ();
   printf ("64^3: peak %.1f -> %.1f MiB (grew by %.1f MiB), estimate %.1f MiB\n", (double) before / 1024.0, (double) after / 1024.0, (double) (after - before) / 1024.0,
           (double) bytes / 1048576.0);
   CHECK ((double) (after - before) * 1024.0 <= (double) bytes,
