@@ -102,8 +102,9 @@ drawable_space (gint32 drawable)
   return babl_format_get_space (gimp_drawable_get_format (drawable));
 }
 
-/* Copies the layer (or the selection's bounds within it) into `exemplar`.
- * Indexed layers are read as RGB: the new pixels are not in the palette. */
+/* Copies the layer (or its selected part: the selection's bounds, with
+ * unselected pixels made transparent) into `exemplar`. Indexed layers are
+ * read as RGB: the new pixels are not in the palette. */
 static gboolean
 read_exemplar (gint32 drawable, gboolean crop_to_selection, TsExemplar *exemplar,
                gchar **message)
@@ -135,6 +136,20 @@ read_exemplar (gint32 drawable, gboolean crop_to_selection, TsExemplar *exemplar
   buffer = gimp_drawable_get_buffer (drawable);
   exemplar->buffer = ts_plugin_copy_buffer (buffer, &rect, format);
   g_object_unref (buffer);
+  if (exemplar->buffer && crop_to_selection && !gimp_selection_is_empty (image))
+    {
+      GeglBuffer *mask = gimp_drawable_get_buffer (gimp_image_get_selection (image));
+      gint x, y;
+      gboolean kept;
+
+      gimp_drawable_offsets (drawable, &x, &y);
+      rect.x += x;
+      rect.y += y;
+      kept = ts_exemplar_keep_selected (exemplar, mask, &rect);
+      g_object_unref (mask);
+      if (!kept)
+        g_clear_object (&exemplar->buffer);
+    }
   if (!exemplar->buffer)
     {
       ts_exemplar_clear (exemplar);

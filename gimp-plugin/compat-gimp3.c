@@ -28,6 +28,8 @@ GIMP_MAIN (TS_TYPE_PLUG_IN)
 
 /* --- reading and writing GIMP's pixels ---------------------------------- */
 
+/* Copies the layer (or its selected part: the selection's bounds, with
+ * unselected pixels made transparent) into `exemplar`. */
 static gboolean
 read_exemplar (GimpDrawable *drawable, gboolean crop_to_selection, TsExemplar *exemplar,
                gchar **message)
@@ -61,6 +63,20 @@ read_exemplar (GimpDrawable *drawable, gboolean crop_to_selection, TsExemplar *e
   buffer = gimp_drawable_get_buffer (drawable);
   exemplar->buffer = ts_plugin_copy_buffer (buffer, &rect, format);
   g_object_unref (buffer);
+  if (exemplar->buffer && crop_to_selection && !gimp_selection_is_empty (image))
+    {
+      GeglBuffer *mask = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)));
+      gint x, y;
+      gboolean kept;
+
+      gimp_drawable_get_offsets (drawable, &x, &y);
+      rect.x += x;
+      rect.y += y;
+      kept = ts_exemplar_keep_selected (exemplar, mask, &rect);
+      g_object_unref (mask);
+      if (!kept)
+        g_clear_object (&exemplar->buffer);
+    }
   if (!exemplar->buffer)
     {
       ts_exemplar_clear (exemplar);

@@ -66,6 +66,50 @@ ts_exemplar_clear (TsExemplar *exemplar)
   g_clear_object (&exemplar->profile);
 }
 
+gboolean
+ts_exemplar_keep_selected (TsExemplar          *exemplar,
+                           GeglBuffer          *mask,
+                           const GeglRectangle *mask_rect)
+{
+  const Babl *space = babl_format_get_space (gegl_buffer_get_format (exemplar->buffer));
+  gboolean grey = exemplar->base_type == GIMP_GRAY;
+  const Babl *format = babl_format_with_space (grey ? "Y'A float" : "R'G'B'A float", space);
+  gint channels = grey ? 2 : 4, width = mask_rect->width;
+  GeglRectangle whole = { 0, 0, width, mask_rect->height };
+  GeglBuffer *masked = gegl_buffer_new (&whole, format);
+  gfloat *pixels = g_try_new (gfloat, (gsize) width * channels);
+  gfloat *selected = g_try_new (gfloat, (gsize) width);
+
+  if (!masked || !pixels || !selected)
+    {
+      g_clear_object (&masked);
+      g_free (pixels);
+      g_free (selected);
+      return FALSE;
+    }
+  /* Row by row in this thread: the mask is a GIMP buffer (see
+   * ts_plugin_transfer). */
+  for (gint y = 0; y < mask_rect->height; y++)
+    {
+      GeglRectangle row = { 0, y, width, 1 };
+      GeglRectangle mask_row = { mask_rect->x, mask_rect->y + y, width, 1 };
+
+      gegl_buffer_get (exemplar->buffer, &row, 1.0, format, pixels, GEGL_AUTO_ROWSTRIDE,
+                       GEGL_ABYSS_NONE);
+      gegl_buffer_get (mask, &mask_row, 1.0, babl_format ("Y float"), selected,
+                       GEGL_AUTO_ROWSTRIDE, GEGL_ABYSS_NONE);
+      for (gint x = 0; x < width; x++)
+        if (!(selected[x] >= 0.5f))
+          pixels[(gsize) x * channels + channels - 1] = 0.0f;
+      gegl_buffer_set (masked, &row, 0, format, pixels, GEGL_AUTO_ROWSTRIDE);
+    }
+  g_free (pixels);
+  g_free (selected);
+  g_object_unref (exemplar->buffer);
+  exemplar->buffer = masked;
+  return TRUE;
+}
+
 const Babl *
 ts_exemplar_layer_format (const TsExemplar *exemplar, const Babl *space)
 {

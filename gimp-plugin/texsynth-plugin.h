@@ -117,6 +117,15 @@ GeglBuffer *ts_plugin_copy_buffer (GeglBuffer          *source,
                                    const Babl          *format);
 void        ts_exemplar_clear     (TsExemplar *exemplar);
 
+/* Makes the exemplar's pixels outside the selection transparent, so that
+ * a non-rectangular selection gives its shape, not its bounds: pixels at
+ * least half selected keep their alpha, the others get 0 (the ops never
+ * copy transparent pixels). `mask` is the selection's buffer, `mask_rect`
+ * the exemplar's area in its coordinates. FALSE if out of memory. */
+gboolean    ts_exemplar_keep_selected (TsExemplar          *exemplar,
+                                       GeglBuffer          *mask,
+                                       const GeglRectangle *mask_rect);
+
 /* The babl format of a layer of the new image for `exemplar`, in `space`. */
 const Babl *ts_exemplar_layer_format (const TsExemplar *exemplar, const Babl *space);
 

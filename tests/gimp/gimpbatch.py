@@ -73,8 +73,10 @@ class ScriptFu2:
 
     def render_report(self, tag, path, w, h, tileable, quality, seed, save=None, select=None):
         body = ""
-        if select:
-            body += "(gimp-image-select-rectangle img CHANNEL-OP-REPLACE %d %d %d %d) " % select
+        # select: one rectangle (x, y, w, h) or a list of them, added up.
+        for i, rect in enumerate([select] if isinstance(select, tuple) else select or []):
+            body += "(gimp-image-select-rectangle img %s %d %d %d %d) " % (
+                ("CHANNEL-OP-ADD" if i else "CHANNEL-OP-REPLACE",) + tuple(rect))
         body += "(let* ((out (car %s)) (layer %s)) " % (
             self.render_call(w, h, tileable, quality, seed), self.active_layer("out"))
         if save:

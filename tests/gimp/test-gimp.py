@@ -51,6 +51,12 @@ brick_rgba = os.path.join(work, "brick-rgba.png")
 tsops.convert(brick, brick_rgba, "R'G'B'A u8",
               alpha_fn=lambda x, y, w, h: 0.0 if (x < 8 and y < 8) else 1.0)
 
+# Bark in the top-left and bottom-right quadrants, pure blue in the others:
+# a selection of the two bark quadrants has the whole image as its bounds.
+quadrants = os.path.join(work, "quadrants.png")
+tsops.convert(bark, quadrants, "R'G'B' u8",
+              colour_fn=lambda x, y, w, h: None if (x < w // 2) == (y < h // 2) else (0.0, 0.0, 1.0))
+
 
 def fields(lines, tag):
     """The values printed after "TSRESULT <tag>" on the first such line."""
@@ -66,6 +72,7 @@ render16 = os.path.join(work, "render16.png")
 render_rgba = os.path.join(work, "render-rgba.png")
 render_a = os.path.join(work, "render-a.png")
 render_b = os.path.join(work, "render-b.png")
+render_shape = os.path.join(work, "render-shape.png")
 tileable = os.path.join(work, "tileable.png")
 volume = os.path.join(work, "volume.vol")
 has_solid_ops = all(gimpbatch.gegl_has(op) for op in ("texsynth:volume-save",
@@ -81,6 +88,9 @@ batch = [
     sf.render_report("renderb", bark, 64, 64, "TRUE", 2, 11, save=render_b),
     # A selection: its bounds are the exemplar.
     sf.render_report("renderselection", bark, 40, 30, "FALSE", 1, 5, select=(10, 10, 40, 40)),
+    # Two rectangles: the exemplar is their shape, not their bounds.
+    sf.render_report("rendershape", quadrants, 64, 64, "FALSE", 1, 5, save=render_shape,
+                     select=[(0, 0, 40, 45), (41, 45, 41, 45)]),
     # In place and undoable: one undo step restores the layer.
     sf.tileable_report("tileable", brick, 2, 5, save=tileable),
 ]
@@ -138,6 +148,12 @@ if tsops.check(os.path.isfile(render_a) and os.path.isfile(render_b),
 r = fields(lines, "TSRESULT renderselection")
 tsops.check(r is not None and list(map(int, r[:2])) == [40, 30],
             "render with a selection: 40x30 image (got %s)" % (r,))
+
+if tsops.check(os.path.isfile(render_shape), "render with a two-rectangle selection exported"):
+    _, _, px = tsops.load(render_shape)
+    blue = sum(1 for i in range(0, len(px), 4) if px[i + 2] > 0.9 and px[i] < 0.1 and px[i + 1] < 0.1)
+    tsops.check(blue == 0, "render with a two-rectangle selection: nothing from the unselected "
+                "quadrants (%d pure blue pixels of %d)" % (blue, len(px) // 4))
 
 r = fields(lines, "TSRESULT tileable")
 if tsops.check(r is not None and os.path.isfile(tileable), "tileable: ran and exported"):

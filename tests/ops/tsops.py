@@ -179,16 +179,21 @@ def save_buffer(buf, path, bitdepth=8):
     save.process()
 
 
-def convert(src, dst, fmt, bitdepth=8, alpha_fn=None):
+def convert(src, dst, fmt, bitdepth=8, alpha_fn=None, colour_fn=None):
     """Write `src` to PNG `dst` in babl format `fmt`; alpha_fn(x, y, w, h)
-    gives an alpha to impose (for formats with alpha)."""
+    gives an alpha to impose (for formats with alpha), colour_fn(x, y, w, h)
+    an (R', G', B') to paint over the pixel, or None to keep it."""
     Gegl = gegl()
     w, h, px = load(src, "R'G'B'A float")
-    if alpha_fn:
+    if alpha_fn or colour_fn:
         px = list(px)
         for y in range(h):
             for x in range(w):
-                px[(y * w + x) * 4 + 3] = alpha_fn(x, y, w, h)
+                if alpha_fn:
+                    px[(y * w + x) * 4 + 3] = alpha_fn(x, y, w, h)
+                colour = colour_fn(x, y, w, h) if colour_fn else None
+                if colour:
+                    px[(y * w + x) * 4:(y * w + x) * 4 + 3] = colour
     rgba = Gegl.Buffer.new("R'G'B'A float", 0, 0, w, h)
     rgba.set(Gegl.Rectangle.new(0, 0, w, h), "R'G'B'A float",
              struct.pack("%df" % len(px), *px))
