@@ -6,6 +6,17 @@
 
 #include <stdio.h>
 
+/* Sanitizer builds (scripts/sanitize.sh): the engine runs several times
+ * slower and memory carries shadow and quarantine, so tests scale their
+ * sizes and skip time and memory bounds there. */
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define TEST_SANITIZED 1
+#elif defined(__has_feature) /* clang */
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define TEST_SANITIZED 1
+#endif
+#endif
+
 extern int ts_test_failures;
 
 #define CHECK(cond, ...)                                                    \

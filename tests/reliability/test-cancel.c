@@ -18,15 +18,8 @@
 /* The issue's bound: within a second. The engine asks the callback every
  * 0.05 s from inside its steps (common/cancel.h), so even a loaded 2-core
  * machine stays far below it; the figure itself is printed. Sanitizer
- * builds (scripts/sanitize.sh) run the engine about 10x slower: there
- * smaller runs check that a cancel frees everything. */
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define TEST_SANITIZED 1
-#elif defined(__has_feature) /* clang */
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define TEST_SANITIZED 1
-#endif
-#endif
+ * builds run the engine about 10x slower: there smaller runs check that a
+ * cancel frees everything. */
 #ifdef TEST_SANITIZED
 #define LATENCY_BOUND_S 10.0
 #define DEFAULT_SIDE 256
