@@ -65,17 +65,11 @@ read_exemplar (GimpDrawable *drawable, gboolean crop_to_selection, TsExemplar *e
   g_object_unref (buffer);
   if (exemplar->buffer && crop_to_selection && !gimp_selection_is_empty (image))
     {
-      GeglBuffer *mask = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)));
+      GimpDrawable *selection = GIMP_DRAWABLE (gimp_image_get_selection (image));
       gint x, y;
-      gboolean kept;
 
       gimp_drawable_get_offsets (drawable, &x, &y);
-      rect.x += x;
-      rect.y += y;
-      kept = ts_exemplar_keep_selected (exemplar, mask, &rect);
-      g_object_unref (mask);
-      if (!kept)
-        g_clear_object (&exemplar->buffer);
+      ts_exemplar_keep_selected (exemplar, gimp_drawable_get_buffer (selection), &rect, x, y);
     }
   if (!exemplar->buffer)
     {

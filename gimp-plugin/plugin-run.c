@@ -66,16 +66,18 @@ ts_exemplar_clear (TsExemplar *exemplar)
   g_clear_object (&exemplar->profile);
 }
 
-gboolean
+void
 ts_exemplar_keep_selected (TsExemplar          *exemplar,
                            GeglBuffer          *mask,
-                           const GeglRectangle *mask_rect)
+                           const GeglRectangle *rect,
+                           gint                 offset_x,
+                           gint                 offset_y)
 {
   const Babl *space = babl_format_get_space (gegl_buffer_get_format (exemplar->buffer));
   gboolean grey = exemplar->base_type == GIMP_GRAY;
   const Babl *format = babl_format_with_space (grey ? "Y'A float" : "R'G'B'A float", space);
-  gint channels = grey ? 2 : 4, width = mask_rect->width;
-  GeglRectangle whole = { 0, 0, width, mask_rect->height };
+  gint channels = grey ? 2 : 4, width = rect->width;
+  GeglRectangle whole = { 0, 0, width, rect->height };
   GeglBuffer *masked = gegl_buffer_new (&whole, format);
   gfloat *pixels = g_try_new (gfloat, (gsize) width * channels);
   gfloat *selected = g_try_new (gfloat, (gsize) width);
@@ -83,16 +85,18 @@ ts_exemplar_keep_selected (TsExemplar          *exemplar,
   if (!masked || !pixels || !selected)
     {
       g_clear_object (&masked);
+      g_clear_object (&exemplar->buffer);
+      g_object_unref (mask);
       g_free (pixels);
       g_free (selected);
-      return FALSE;
+      return;
     }
   /* Row by row in this thread: the mask is a GIMP buffer (see
    * ts_plugin_transfer). */
-  for (gint y = 0; y < mask_rect->height; y++)
+  for (gint y = 0; y < rect->height; y++)
     {
       GeglRectangle row = { 0, y, width, 1 };
-      GeglRectangle mask_row = { mask_rect->x, mask_rect->y + y, width, 1 };
+      GeglRectangle mask_row = { offset_x + rect->x, offset_y + rect->y + y, width, 1 };
 
       gegl_buffer_get (exemplar->buffer, &row, 1.0, format, pixels, GEGL_AUTO_ROWSTRIDE,
                        GEGL_ABYSS_NONE);
@@ -105,9 +109,9 @@ ts_exemplar_keep_selected (TsExemplar          *exemplar,
     }
   g_free (pixels);
   g_free (selected);
+  g_object_unref (mask);
   g_object_unref (exemplar->buffer);
   exemplar->buffer = masked;
-  return TRUE;
 }
 
 const Babl *

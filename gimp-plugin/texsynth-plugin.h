@@ -120,11 +120,14 @@ void        ts_exemplar_clear     (TsExemplar *exemplar);
 /* Makes the exemplar's pixels outside the selection transparent, so that
  * a non-rectangular selection gives its shape, not its bounds: pixels at
  * least half selected keep their alpha, the others get 0 (the ops never
- * copy transparent pixels). `mask` is the selection's buffer, `mask_rect`
- * the exemplar's area in its coordinates. FALSE if out of memory. */
-gboolean    ts_exemplar_keep_selected (TsExemplar          *exemplar,
+ * copy transparent pixels). Takes `mask`, the selection's buffer; `rect`
+ * is the exemplar's area in its drawable, which lies at (offset_x,
+ * offset_y) in the image. Out of memory, it clears exemplar->buffer. */
+void        ts_exemplar_keep_selected (TsExemplar          *exemplar,
                                        GeglBuffer          *mask,
-                                       const GeglRectangle *mask_rect);
+                                       const GeglRectangle *rect,
+                                       gint                 offset_x,
+                                       gint                 offset_y);
 
 /* The babl format of a layer of the new image for `exemplar`, in `space`. */
 const Babl *ts_exemplar_layer_format (const TsExemplar *exemplar, const Babl *space);
