@@ -20,12 +20,10 @@
 
 import argparse
 import glob
-import json
 import math
 import os
 import shutil
 import statistics
-import struct
 import subprocess
 import sys
 import tempfile
@@ -50,14 +48,10 @@ plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
     or "/usr/lib/x86_64-linux-gnu/gegl-0.4"
 env = dict(os.environ, GEGL_PATH=os.path.join(args.build, "operations") + ":" + plugins)
 
-try:
-    import gi
-    gi.require_version("Gegl", "0.4")
-    from gi.repository import Gegl
-except (ImportError, ValueError) as error:
-    sys.exit("PyGObject with the Gegl typelib is needed (run with /usr/bin/python3): %s" % error)
-os.environ["GEGL_PATH"] = env["GEGL_PATH"]
-Gegl.init(None)
+os.environ["GEGL_PATH"] = env["GEGL_PATH"]   # before tsops initialises GEGL
+sys.path.insert(0, os.path.join(ROOT, "tests", "ops"))
+import tsops  # noqa: E402
+tsops.gegl()
 
 
 def gegl(*argv):
@@ -72,26 +66,11 @@ def gegl(*argv):
 
 
 def measure(exemplar, result):
-    proc = subprocess.run([measure_tool, "--json", "--tileable", exemplar, result],
-                          capture_output=True, text=True)
-    if proc.returncode != 0:
-        sys.exit("texsynth-measure failed:\n" + proc.stderr)
-    return json.loads(proc.stdout)
+    return tsops.run_measure(measure_tool, exemplar, result, tileable=True)
 
 
 def lab(path):
-    graph = Gegl.Node()
-    load = graph.create_child("gegl:load")
-    load.set_property("path", path)
-    box = load.get_bounding_box()
-    buf = Gegl.Buffer.new("CIE Lab float", 0, 0, box.width, box.height)
-    sink = graph.create_child("gegl:write-buffer")
-    sink.set_property("buffer", buf)
-    load.connect_to("output", sink, "input")
-    sink.process()
-    rect = Gegl.Rectangle.new(0, 0, box.width, box.height)
-    data = bytes(buf.get(rect, 1.0, "CIE Lab float", Gegl.AbyssPolicy.NONE))
-    return box.width, box.height, struct.unpack("%df" % (len(data) // 4), data)
+    return tsops.load(path, "CIE Lab float")
 
 
 def delta_e_central(a_path, b_path):

@@ -43,32 +43,18 @@ def child(fmt, out):
         for key, value in props.items():
             node.set_property(key, value)
         source.connect_to("output", node, "input")
-        box = node.get_bounding_box()
-        result = Gegl.Buffer.new("CIE Lab alpha float", 0, 0, box.width, box.height)
-        sink = graph.create_child("gegl:write-buffer")
-        sink.set_property("buffer", result)
-        node.connect_to("output", sink, "input")
-        sink.process()
         # The ops' own format: read without any conversion.
-        digest.update(bytes(result.get(box, 1.0, "CIE Lab alpha float", Gegl.AbyssPolicy.NONE)))
+        digest.update(tsops.render_bytes(node, "CIE Lab alpha float")[2])
     with open(out, "w") as f:
         f.write(digest.hexdigest())
 
 
 def exemplar_bytes():
     """bark.png's R'G'B' u8 codes, as stored (no conversion)."""
-    Gegl = tsops.gegl()
     path = os.path.join(os.environ.get("TEXSYNTH_SOURCE_ROOT", "."), "examples", "bark.png")
-    graph = Gegl.Node()
-    load = graph.create_child("gegl:load")
+    load = tsops.gegl().Node().create_child("gegl:load")
     load.set_property("path", path)
-    box = load.get_bounding_box()
-    buf = Gegl.Buffer.new("R'G'B' u8", 0, 0, box.width, box.height)
-    sink = graph.create_child("gegl:write-buffer")
-    sink.set_property("buffer", buf)
-    load.connect_to("output", sink, "input")
-    sink.process()
-    return box.width, box.height, bytes(buf.get(box, 1.0, "R'G'B' u8", Gegl.AbyssPolicy.NONE))
+    return tsops.render_bytes(load, "R'G'B' u8")
 
 
 if len(sys.argv) == 4 and sys.argv[1] == "--child":

@@ -144,8 +144,8 @@ def gegl():
     return _gegl
 
 
-def render(node, fmt="R'G'B'A float"):
-    """Render a node's whole bounding box: (width, height, floats)."""
+def render_bytes(node, fmt):
+    """Render a node's whole bounding box: (width, height, bytes in `fmt`)."""
     Gegl = gegl()
     box = node.get_bounding_box()
     buf = Gegl.Buffer.new(fmt, box.x, box.y, box.width, box.height)
@@ -154,8 +154,13 @@ def render(node, fmt="R'G'B'A float"):
     sink.set_property("buffer", buf)
     node.connect_to("output", sink, "input")
     sink.process()
-    data = bytes(buf.get(box, 1.0, fmt, Gegl.AbyssPolicy.NONE))
-    return box.width, box.height, struct.unpack("%df" % (len(data) // 4), data)
+    return box.width, box.height, bytes(buf.get(box, 1.0, fmt, Gegl.AbyssPolicy.NONE))
+
+
+def render(node, fmt="R'G'B'A float"):
+    """Render a node's whole bounding box: (width, height, floats)."""
+    w, h, data = render_bytes(node, fmt)
+    return w, h, struct.unpack("%df" % (len(data) // 4), data)
 
 
 def load(path, fmt="R'G'B'A float"):
