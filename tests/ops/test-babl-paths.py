@@ -36,13 +36,7 @@ def child(fmt, out):
     digest = hashlib.sha256()
     for op, props in (("texsynth:synthesize", dict(width=64, height=64, seed=11, quality=1)),
                       ("texsynth:tileable", dict(seed=5, quality=1))):
-        graph = Gegl.Node()
-        source = graph.create_child("gegl:buffer-source")
-        source.set_property("buffer", exemplar)
-        node = graph.create_child(op)
-        for key, value in props.items():
-            node.set_property(key, value)
-        source.connect_to("output", node, "input")
+        graph, _, node = tsops.op_on_buffer(exemplar, op, **props)
         # The ops' own format: read without any conversion.
         digest.update(tsops.render_bytes(node, "CIE Lab alpha float")[2])
     with open(out, "w") as f:

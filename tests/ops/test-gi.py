@@ -51,14 +51,7 @@ def exemplar_buffer(fmt, x=0, y=0):
 
 
 def synth_node(buf, **props):
-    graph = Gegl.Node()
-    source = graph.create_child("gegl:buffer-source")
-    source.set_property("buffer", buf)
-    op = graph.create_child(OP)
-    for k, v in props.items():
-        op.set_property(k.replace("_", "-"), v)
-    source.connect_to("output", op, "input")
-    return graph, source, op
+    return tsops.op_on_buffer(buf, OP, **props)
 
 
 note("-- buffers of many formats")

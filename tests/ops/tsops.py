@@ -144,6 +144,21 @@ def gegl():
     return _gegl
 
 
+def op_on_buffer(buffer, op, **props):
+    """A new graph: gegl:buffer-source of `buffer` into `op`, whose
+    properties are `props` (underscores in names become dashes).
+    Returns (graph, source node, op node); keep the graph while the nodes
+    are in use, since it owns them."""
+    graph = gegl().Node()
+    source = graph.create_child("gegl:buffer-source")
+    source.set_property("buffer", buffer)
+    node = graph.create_child(op)
+    for key, value in props.items():
+        node.set_property(key.replace("_", "-"), value)
+    source.connect_to("output", node, "input")
+    return graph, source, node
+
+
 def render_bytes(node, fmt):
     """Render a node's whole bounding box: (width, height, bytes in `fmt`)."""
     Gegl = gegl()

@@ -153,13 +153,7 @@ def run_on_buffer(op, fmt, pixels, w, h, **props):
     buf = Gegl.Buffer.new(fmt, 0, 0, w, h)
     rgba.copy(Gegl.Rectangle.new(0, 0, w, h), Gegl.AbyssPolicy.NONE, buf,
               Gegl.Rectangle.new(0, 0, w, h))
-    graph = Gegl.Node()
-    src = graph.create_child("gegl:buffer-source")
-    src.set_property("buffer", buf)
-    node = graph.create_child(op)
-    for key, value in props.items():
-        node.set_property(key, value)
-    src.connect_to("output", node, "input")
+    graph, _, node = tsops.op_on_buffer(buf, op, **props)
     return tsops.render(node)
 
 
