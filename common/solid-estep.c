@@ -2,6 +2,13 @@
  * neighbourhoods of all three orientations covering it, closest to their
  * robust weighted mean; each orientation's source follows its own vote
  * closest to that mean, so the next search stays coherent.
+ *
+ * Histogram matching acts twice: Kopf et al.'s weight 1 / (1 + excess)
+ * moves the mean, and the choice of the vote closest to it adds a penalty
+ * growing with the square of the excess. The weight alone cannot stop a
+ * voxel whose votes all carry an over-represented colour from keeping it,
+ * and exemplars with large uniform areas (cracked earth) collapsed to one
+ * flat colour; squared, the penalty leaves near-target histograms alone.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 
@@ -12,6 +19,8 @@
  * automatic neighbourhood size; more (tiny mirrored volumes) are
  * gathered a second time instead. */
 #define TS_SOLID_LOCAL_VOTES 384
+/* Squared working-unit distance added per squared unit of excess. */
+#define TS_SOLID_HISTOGRAM_CHOICE 30.0f
 
 typedef struct
 {
@@ -38,7 +47,7 @@ typedef struct
 } Votes;
 
 static void
-choose (Votes *v, const float *value, int axis, int32_t source)
+choose (Votes *v, const TsSolidView *view, const float *value, int axis, int32_t source)
 {
   float d = 0.0f;
   for (int c = 0; c < TS_CHANNELS; c++)
@@ -46,6 +55,8 @@ choose (Votes *v, const float *value, int axis, int32_t source)
       float e = value[c] - v->mean[c];
       d += e * e;
     }
+  if (view->excess)
+    d += TS_SOLID_HISTOGRAM_CHOICE * view->excess[source] * view->excess[source];
   if (d < v->axis_distance[axis])
     {
       v->axis_distance[axis] = d;
@@ -64,13 +75,13 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
 {
   const float *value = view->exemplar->pixels + (size_t) source * TS_CHANNELS;
 
-  if (view->factor)
-    weight *= view->factor[source];
+  if (view->excess)
+    weight /= 1.0f + view->excess[source];
   if (value[3] <= 0.0f || !(weight > 0.0f))
     return;
   if (v->choosing)
     {
-      choose (v, value, axis, source);
+      choose (v, view, value, axis, source);
       return;
     }
   for (int c = 0; c < TS_CHANNELS; c++)
@@ -160,9 +171,11 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
     collect (v, level, gu, gv, matches, xyz);
   else
     for (size_t i = 0; i < v->count; i++)
-      choose (v, level->view[v->list[i].axis].exemplar->pixels +
-                 (size_t) v->list[i].source * TS_CHANNELS,
-              v->list[i].axis, v->list[i].source);
+      {
+        const TsSolidView *view = &level->view[v->list[i].axis];
+        choose (v, view, view->exemplar->pixels + (size_t) v->list[i].source * TS_CHANNELS,
+                v->list[i].axis, v->list[i].source);
+      }
   return v->best_source >= 0;
 }
 

@@ -127,7 +127,7 @@ ts_solid_histogram_apply (TsSolidHistogram *h, TsSolidHistogramDelta delta)
 }
 
 void
-ts_solid_histogram_factors (const TsSolidHistogram *h, TsSolidLevel *level)
+ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level)
 {
   float excess[3][TS_SOLID_HISTOGRAM_BINS];
 
@@ -143,8 +143,8 @@ ts_solid_histogram_factors (const TsSolidHistogram *h, TsSolidLevel *level)
   for (int a = 0; a < TS_SOLID_AXES; a++)
     {
       const TsImage *ex = level->view[a].exemplar;
-      float *factor = level->view[a].factor;
-      if (!ex || !factor)
+      float *out = level->view[a].excess;
+      if (!ex || !out)
         continue;
       for (size_t i = 0; i < ts_image_pixel_count (ex); i++)
         {
@@ -152,7 +152,7 @@ ts_solid_histogram_factors (const TsSolidHistogram *h, TsSolidLevel *level)
           float sum = 0.0f;
           for (int c = 0; c < 3; c++)
             sum += excess[c][bin_of (h, c, p[c])];
-          factor[i] = 1.0f / (1.0f + sum);
+          out[i] = sum;
         }
     }
 }

@@ -91,7 +91,7 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
         double ex = (double) exemplars[a]->width * (double) exemplars[a]->height;
         bytes += ex * 16.0 * 4.0 / 3.0;             /* working pyramid          */
         bytes += 2.0 * ex * (k * 4.0 + 16.0);       /* candidate levels, MRPM   */
-        bytes += (double) threads * ex * 4.0 + ex * 12.0; /* stamps, opaque, factors */
+        bytes += (double) threads * ex * 4.0 + ex * 12.0; /* stamps, opaque, excesses */
       }
   /* Finest level: the result volume (which holds the values), three
    * sources, the matches of three orientations on a grid of spacing 2

@@ -26,7 +26,7 @@ typedef struct
   TsCandidateSet  candidates, coarser_candidates;
   int32_t        *opaque;
   size_t          opaque_count;
-  float          *factor;
+  float          *excess;
 } Exemplar;
 
 typedef struct
@@ -144,7 +144,7 @@ run_free (Run *run)
       ts_candidate_set_free (&ex->candidates);
       ts_candidate_set_free (&ex->coarser_candidates);
       free (ex->opaque);
-      free (ex->factor);
+      free (ex->excess);
     }
 }
 
@@ -189,7 +189,7 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
   return TS_OK;
 }
 
-/* Candidate sets, opaque lists and histogram factors of every exemplar at
+/* Candidate sets, opaque lists and histogram excesses of every exemplar at
  * `level`, and the views that point at them; only the candidate sets at
  * levels coarser than the volume's coarsest. */
 static TsStatus
@@ -218,15 +218,15 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
           continue;
         }
       free (ex->opaque);
-      free (ex->factor);
+      free (ex->excess);
       ex->opaque = malloc (pixels * sizeof (int32_t));
-      ex->factor = malloc (pixels * sizeof (float));
-      if (!ex->opaque || !ex->factor)
+      ex->excess = malloc (pixels * sizeof (float));
+      if (!ex->opaque || !ex->excess)
         return TS_ERROR_OUT_OF_MEMORY;
       ex->opaque_count = 0;
       for (size_t i = 0; i < pixels; i++)
         {
-          ex->factor[i] = 1.0f;
+          ex->excess[i] = 0.0f;
           if (img->pixels[i * TS_CHANNELS + 3] > 0.0f)
             ex->opaque[ex->opaque_count++] = (int32_t) i;
         }
@@ -246,7 +246,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       view->candidates = &ex->candidates;
       view->opaque = ex->opaque;
       view->opaque_count = ex->opaque_count;
-      view->factor = run->params->histogram_matching ? ex->factor : NULL;
+      view->excess = run->params->histogram_matching ? ex->excess : NULL;
     }
   return TS_OK;
 }
@@ -448,7 +448,7 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
   for (uint8_t b = 0; b < TS_SOLID_BATCHES && status == TS_OK; b++)
     {
       if (histogram)
-        ts_solid_histogram_factors (histogram, l);
+        ts_solid_histogram_excess (histogram, l);
       *changed += ts_solid_estep (l, &it.gu, &it.gv, it.matches, batch_of, b, histogram, delta);
       if (histogram)
         ts_solid_histogram_apply (histogram, delta);

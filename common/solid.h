@@ -23,7 +23,7 @@ typedef struct
   const TsCandidateSet *candidates;
   const int32_t        *opaque;      /* indices of pixels with alpha > 0    */
   size_t                opaque_count;
-  float                *factor;      /* histogram weight per exemplar pixel, or NULL */
+  float                *excess;      /* histogram excess per exemplar pixel, or NULL */
 } TsSolidView;
 
 typedef struct
@@ -94,9 +94,10 @@ void ts_solid_histogram_init (TsSolidHistogram *h, const TsSolidLevel *level);
 void ts_solid_histogram_move (const TsSolidHistogram *h, TsSolidHistogramDelta delta,
                               const float *before, const float *after);
 void ts_solid_histogram_apply (TsSolidHistogram *h, TsSolidHistogramDelta delta);
-/* Vote weight factors of every exemplar pixel of every view, from the
- * excess of the volume's histogram over the target. */
-void ts_solid_histogram_factors (const TsSolidHistogram *h, TsSolidLevel *level);
+/* Every exemplar pixel's excess in every view: the sum over channels of
+ * how far the volume's density in the pixel's bin exceeds the target
+ * (0 = not over-represented). */
+void ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level);
 
 /* --- E-step ---------------------------------------------------------------- */
 

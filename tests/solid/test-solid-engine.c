@@ -1,6 +1,7 @@
 /* Solid synthesis engine: parameters and errors, determinism over seeds
  * and thread counts, exemplar colours only, periodic boundaries, free
- * orientations, histogram bookkeeping, cancel and the memory estimate.
+ * orientations, histogram bookkeeping and tonal spread, cancel and the
+ * memory estimate.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "test-util.h"
 #include "solid.h"
@@ -331,6 +332,44 @@ test_cancel (void)
   free (ex.pixels);
 }
 
+static double
+lightness_deviation (const float *pixels, size_t count)
+{
+  double sum = 0.0, squares = 0.0;
+  for (size_t i = 0; i < count; i++)
+    {
+      sum += pixels[i * TS_CHANNELS];
+      squares += (double) pixels[i * TS_CHANNELS] * pixels[i * TS_CHANNELS];
+    }
+  return sqrt (fmax (0.0, squares / (double) count - (sum / (double) count) * (sum / (double) count)));
+}
+
+/* Histogram matching keeps the exemplar's tonal spread: cracked earth is
+ * mostly one flat grey with thin cracks, and a volume that votes by
+ * majority alone turns flat grey. */
+static void
+test_keeps_tonal_spread (void)
+{
+  TsImage ex;
+  TsSolidParams p;
+  float *v;
+  size_t n = 32;
+  double ex_sd, vol_sd;
+
+  test_load_exemplar ("cracked.png", &ex);
+  const TsImage *all[3] = { &ex, &ex, &ex };
+  ts_solid_params_init (&p);
+  p.size = n;
+  CHECK (run (all, &p, &v, NULL) == TS_OK, "synthesis");
+  ex_sd = lightness_deviation (ex.pixels, ts_image_pixel_count (&ex));
+  vol_sd = lightness_deviation (v, n * n * n);
+  printf ("cracked.png: L standard deviation %.2f in the volume, %.2f in the exemplar\n", vol_sd, ex_sd);
+  CHECK (vol_sd >= 0.3 * ex_sd, "the volume keeps at least 30 %% of the exemplar's L deviation (%.2f of %.2f)",
+         vol_sd, ex_sd);
+  free (v);
+  free (ex.pixels);
+}
+
 /* Peak memory of a 64^3 synthesis stays within its estimate. */
 static void
 test_memory_bound (void)
@@ -369,6 +408,7 @@ main (void)
   test_periodic ();
   test_orientations ();
   test_histogram_bookkeeping ();
+  test_keeps_tonal_spread ();
   test_cancel ();
   return test_finish ("test-solid-engine");
 }
