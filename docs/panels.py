@@ -1,0 +1,56 @@
+# A row of GEGL image nodes on a white backdrop, saved as PNG, for the
+# scripts that regenerate the README's pictures. Import after setting
+# GEGL_PATH (Gegl.init reads it).
+# SPDX-License-Identifier: LGPL-3.0-or-later
+
+import gi
+gi.require_version("Gegl", "0.4")
+from gi.repository import Gegl  # noqa: E402
+
+Gegl.init(None)
+graph = Gegl.Node()
+
+
+def node(op, **props):
+    n = graph.create_child(op)
+    for key, value in props.items():
+        n.set_property(key.replace("_", "-"), value)
+    return n
+
+
+def fit(source, ratio, x):
+    """Scale `source` by `ratio` (nearest) and move it to x; returns (node, width, height)."""
+    box = source.get_bounding_box()
+    scaled = node("gegl:scale-ratio", x=ratio, y=ratio, sampler=Gegl.SamplerType.NEAREST)
+    source.connect_to("output", scaled, "input")
+    moved = node("gegl:translate", x=float(x), y=0.0)
+    scaled.connect_to("output", moved, "input")
+    return moved, int(round(box.width * ratio)), int(round(box.height * ratio))
+
+
+def save_row(panels, ratios, path, gap=8):
+    """Place the panels left to right, each scaled by its ratio (a ratio of
+    None: as tall as the tallest panel before it), and save them."""
+    canvas, x, top = None, 0, 0
+    for panel, ratio in zip(panels, ratios):
+        if ratio is None:
+            ratio = top / panel.get_bounding_box().height
+        placed, width, height = fit(panel, ratio, x)
+        top = max(top, height)
+        if canvas is None:
+            canvas = placed
+        else:
+            over = node("gegl:over")
+            canvas.connect_to("output", over, "input")
+            placed.connect_to("output", over, "aux")
+            canvas = over
+        x += width + gap
+    white = node("gegl:color", value=Gegl.Color.new("white"))
+    backdrop = node("gegl:crop", width=float(x - gap), height=float(top))
+    white.connect_to("output", backdrop, "input")
+    flat = node("gegl:over")
+    backdrop.connect_to("output", flat, "input")
+    canvas.connect_to("output", flat, "aux")
+    save = node("gegl:png-save", path=path, bitdepth=8)
+    flat.connect_to("output", save, "input")
+    save.process()

@@ -1,0 +1,39 @@
+#!/usr/bin/python3
+# Regenerates docs/solid-truth.png: for each ground-truth solid of
+# build/benchmarks/solid-truth (128^3, seed 1), its z = 0 slice (the
+# exemplar), its middle slice across x, and the middle slice across x of
+# the volume texsynth:volume-slice synthesises from that exemplar. Run from
+# the source root after building:  docs/solid-truth.py [BUILD_DIR]
+# Needs the system python3 (PyGObject + Gegl typelib).
+# SPDX-License-Identifier: LGPL-3.0-or-later
+
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
+plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
+                         capture_output=True, text=True).stdout.strip()
+os.environ["GEGL_PATH"] = os.path.join(build, "operations") + ":" + plugins
+sys.path.insert(0, os.path.join(ROOT, "docs"))
+from panels import node, save_row  # noqa: E402  (after GEGL_PATH: Gegl.init reads it)
+
+SIZE = 128
+SEED = 1
+SCALE = 1.5
+
+with tempfile.TemporaryDirectory() as scratch:
+    panels = []
+    for kind in ("cells", "blobs"):
+        truth = os.path.join(scratch, kind + ".vol")
+        subprocess.run([os.path.join(build, "benchmarks", "solid-truth"), kind, str(SIZE), str(SEED), truth],
+                       check=True)
+        exemplar = node("texsynth:volume-load", path=truth, axis="z", index=0)
+        truth_slice = node("texsynth:volume-load", path=truth, axis="x", index=SIZE // 2)
+        synthesised = node("texsynth:volume-slice", size=SIZE, seed=SEED, axis="x", index=SIZE // 2)
+        exemplar.connect_to("output", synthesised, "input")
+        panels += [exemplar, truth_slice, synthesised]
+    save_row(panels, [SCALE] * len(panels), os.path.join(ROOT, "docs", "solid-truth.png"), gap=6)
+print("wrote docs/solid-truth.png")
