@@ -128,6 +128,14 @@ cells (const Solid *s, const double p[3], double rgb[3])
   rgb[2] = (shade + 20.0) * mortar + 36.0 * (1.0 - mortar);
 }
 
+/* A mineral's colour, lightened or darkened by `amount`. */
+static void
+shade (const double base[3], double amount, double rgb[3])
+{
+  for (int c = 0; c < 3; c++)
+    rgb[c] = base[c] + amount;
+}
+
 /* Spots: two octaves of noise, thresholded into dark spots with a brown
  * rim on a tan ground with fine grain. */
 static void
@@ -135,12 +143,10 @@ blobs (const Solid *s, const double p[3], double rgb[3])
 {
   double v = 0.6 * value_noise (s, 7, lattice_period (s, 10.0), p)
              + 0.4 * value_noise (s, 8, lattice_period (s, 5.0), p);
-  double grain = 24.0 * (value_noise (s, 9, lattice_period (s, 2.0), p) - 0.5);
   static const double spot[3] = { 45, 32, 20 }, rim[3] = { 130, 80, 35 },
                       ground[3] = { 215, 165, 105 };
-  const double *base = v < 0.38 ? spot : v < 0.43 ? rim : ground;
-  for (int c = 0; c < 3; c++)
-    rgb[c] = base[c] + grain;
+  shade (v < 0.38 ? spot : v < 0.43 ? rim : ground, 24.0 * (value_noise (s, 9, lattice_period (s, 2.0), p) - 0.5),
+         rgb);
 }
 
 /* Granite: fine speckles of three minerals from two noise fields. */
@@ -149,12 +155,10 @@ grains (const Solid *s, const double p[3], double rgb[3])
 {
   size_t fine = lattice_period (s, 3.0);
   double a = value_noise (s, 10, fine, p), b = value_noise (s, 11, fine, p);
-  double shade = 30.0 * (value_noise (s, 12, lattice_period (s, 1.5), p) - 0.5);
   static const double dark[3] = { 40, 38, 42 }, pink[3] = { 190, 130, 120 },
                       white[3] = { 225, 220, 215 };
-  const double *base = a < 0.4 ? dark : b < 0.5 ? pink : white;
-  for (int c = 0; c < 3; c++)
-    rgb[c] = base[c] + shade;
+  shade (a < 0.4 ? dark : b < 0.5 ? pink : white, 30.0 * (value_noise (s, 12, lattice_period (s, 1.5), p) - 0.5),
+         rgb);
 }
 
 static uint8_t
