@@ -34,7 +34,7 @@ import statistics
 import subprocess
 import time
 
-from solidslices import axis_slice, load_rgb, measure_volume, read_vol, save_rgb, tsops
+from solidslices import axis_slice, measure_volume, read_vol, save_rgb, tsops
 
 parser = argparse.ArgumentParser(description="Quality of texsynth solid synthesis")
 parser.add_argument("--measure", default=os.environ.get("TEXSYNTH_MEASURE", "build/tools/texsynth-measure"))
@@ -75,7 +75,7 @@ def coherence_2d(exemplar, path, width, height, tileable):
 def fresh_reference(exemplar, name):
     """An unseen piece of the texture against a 2D synthesis: the right half
     measured against the left half, and a synthesis from the left half."""
-    w, h, rgb = load_rgb(exemplar)
+    w, h, rgb = tsops.load_bytes(exemplar, "R'G'B' u8")
     half = w // 2
     paths = [os.path.join(outdir, "%s-%s.png" % (name, side)) for side in ("left", "right")]
     for path, x0 in zip(paths, (0, half)):
@@ -157,12 +157,13 @@ def run_truth():
         truth = read_vol(truth_path)
         exemplar = os.path.join(outdir, kind + ".png")
         save_rgb(exemplar, args.size, args.size, axis_slice(truth, 2, 0))
-        row = {"name": kind, "seconds": synthesize_volume(exemplar, os.path.join(outdir, kind + ".vol"), kind)}
+        vol_path = os.path.join(outdir, kind + ".vol")
+        row = {"name": kind, "seconds": synthesize_volume(exemplar, vol_path, kind)}
         row["coherence_2d"] = coherence_2d(exemplar, os.path.join(outdir, kind + "-2d.png"),
                                            args.size, args.size, True)
         row.update(("truth_" + k, v) for k, v in
                    measure_volume(args.measure, exemplar, truth_path, outdir, kind + "-truth").items())
-        row.update(measure_volume(args.measure, exemplar, os.path.join(outdir, kind + ".vol"), outdir, kind))
+        row.update(measure_volume(args.measure, exemplar, vol_path, outdir, kind))
         rows.append(row)
     print("| solid | 2D coherence | coherence: truth (ratio) / synthesised (ratio) | completeness: truth / "
           "synthesised | copy | sharpness | seam | seam, inner lines |")

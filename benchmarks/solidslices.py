@@ -29,14 +29,6 @@ def save_rgb(path, width, height, pixels):
     tsops.save_buffer(buf, path)
 
 
-def load_rgb(path):
-    """(width, height, R'G'B' u8 bytes) of an image file."""
-    graph = tsops.gegl().Node()
-    node = graph.create_child("gegl:load")
-    node.set_property("path", path)
-    return tsops.render_bytes(node, "R'G'B' u8")
-
-
 def axis_slice(vol, axis, index, shift=0):
     """The slice across `axis` at `index`, its pixels rolled by `shift` in
     both directions (so that an inner line lands on the wrap-around edge)."""

@@ -178,13 +178,18 @@ def render(node, fmt="R'G'B'A float"):
     return w, h, struct.unpack("%df" % (len(data) // 4), data)
 
 
-def load(path, fmt="R'G'B'A float"):
-    """Read an image file: (width, height, floats in `fmt`)."""
-    Gegl = gegl()
-    graph = Gegl.Node()
+def load_bytes(path, fmt):
+    """Read an image file: (width, height, bytes in `fmt`)."""
+    graph = gegl().Node()
     node = graph.create_child("gegl:load")
     node.set_property("path", path)
-    return render(node, fmt)
+    return render_bytes(node, fmt)
+
+
+def load(path, fmt="R'G'B'A float"):
+    """Read an image file: (width, height, floats in `fmt`)."""
+    w, h, data = load_bytes(path, fmt)
+    return w, h, struct.unpack("%df" % (len(data) // 4), data)
 
 
 def save_buffer(buf, path, bitdepth=8):
