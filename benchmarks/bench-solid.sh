@@ -23,8 +23,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 . "$here/benchmarks/bench-lib.sh"
 build="$here/build"
-exemplars="$here/../shared/exemplars"
-[ -d "$exemplars" ] || exemplars="$here/examples"
+exemplars="$here/tests/exemplars"
 sizes="64 128 256"
 threads="2"
 runs=3

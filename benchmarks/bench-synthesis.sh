@@ -21,8 +21,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 . "$here/benchmarks/bench-lib.sh"
 build="$here/build"
-exemplars="$here/../shared/exemplars"
-[ -d "$exemplars" ] || exemplars="$here/examples"
+exemplars="$here/tests/exemplars"
 sizes="256 1024"
 threads="1 2"
 runs=5

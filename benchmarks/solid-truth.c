@@ -5,7 +5,7 @@
  * on the quality figures, against which synthesised volumes are judged.
  * Usage: solid-truth cells|blobs|grains SIZE SEED OUT.vol
  * SPDX-License-Identifier: LGPL-3.0-or-later */
-#include "volume-file.h"
+#include "volume/volume.h"
 
 #include <math.h>
 #include <stdio.h>

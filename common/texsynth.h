@@ -122,7 +122,7 @@ TsStatus ts_synthesize (const TsParams *params,
                         void           *user_data,
                         TsError        *error);
 
-/* --- Making an existing image tileable (common/tileable.c) -------------- */
+/* --- Making an existing image tileable (common/tileable/) --------------- */
 
 typedef enum
 {

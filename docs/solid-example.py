@@ -3,7 +3,7 @@
 # x, y and z of a 128^3 solid texture synthesised from it, at the same
 # scale, and the atlas of all its slices across z (scaled down). Run from the source root after
 # building:  docs/solid-example.py [BUILD_DIR] [EXEMPLAR]
-# (default exemplar: land1.png from ../shared/exemplars).
+# (default exemplar: the bundled tests/exemplars/land1.png).
 # Needs the system python3 (PyGObject + Gegl typelib).
 # SPDX-License-Identifier: LGPL-3.0-or-later
 
@@ -13,7 +13,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
-exemplar = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "..", "shared", "exemplars", "land1.png")
+exemplar = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "tests", "exemplars", "land1.png")
 plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
                          capture_output=True, text=True).stdout.strip()
 os.environ["GEGL_PATH"] = os.path.join(build, "operations") + ":" + plugins

@@ -5,7 +5,7 @@
  * a success must give a volume whose every voxel byte can be read.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #define _GNU_SOURCE
-#include "volume-file.h"
+#include "volume/volume.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -8,6 +8,7 @@
 #include <gegl-plugin.h>
 
 #include "texsynth.h"
+#include "op-lab.h" /* TS_OP_FORMAT */
 
 /* Binds the "texsynth" text domain to LOCALEDIR, or to $TEXSYNTH_LOCALEDIR
  * if set (tests use the catalogues of the build tree), in UTF-8. Must run
@@ -31,9 +32,6 @@ void ts_op_bind_textdomain (void);
     gegl_op_##op_name##_register_type (module);                         \
     return TRUE;                                                        \
   }
-
-/* The engine's pixel layout, exactly (see texsynth.h). */
-#define TS_OP_FORMAT "CIE Lab alpha float"
 
 /* The engine's defaults, so the properties default to the same values
  * (evaluated when the op class registers its properties). */

@@ -7,8 +7,6 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "op-common.h"
-
 typedef enum { CURVE_LINEAR, CURVE_SRGB, CURVE_GAMMA } Curve;
 
 typedef struct

@@ -13,6 +13,9 @@
 
 #include <gegl.h>
 
+/* The engine's pixel layout, exactly (see texsynth.h). */
+#define TS_OP_FORMAT "CIE Lab alpha float"
+
 /* Reads `rect` of `buffer` as "CIE Lab alpha float" into `lab` (4 floats
  * per pixel, rows of rect->width). Formats of the RGB and grey models in
  * u8, u16 or float, in a space with the sRGB, a linear or a gamma curve,

@@ -60,8 +60,8 @@ property_enum (layout, _("Layout"), TexsynthVolumeLoadLayout, texsynth_volume_lo
 #pragma GCC diagnostic pop
 
 #include "op-common.h"
-#include "volume-file.h"
-#include "volume-layout.h"
+#include "volume/volume.h"
+#include "volume/layout.h"
 
 TS_OP_MODULE (texsynth_volume_load)
 

@@ -77,8 +77,8 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSaveFreeAxis,
 #include "gegl-op.h"
 #pragma GCC diagnostic pop
 
-#include "volume-file.h"
-#include "volume-layout.h"
+#include "volume/volume.h"
+#include "volume/layout.h"
 #include "volume-png.h"
 
 #include <errno.h>

@@ -73,7 +73,7 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSliceFreeAxis,
 #include "gegl-op.h"
 #pragma GCC diagnostic pop
 
-#include "volume-layout.h"
+#include "volume/layout.h"
 
 #include <stdio.h>
 

@@ -10,7 +10,7 @@ packages=(
   python3 python3-gi gir1.2-gegl-0.4            # op tests from Python (GObject introspection)
   gettext locales                               # translations (po/) and their tests' locales
   gimp libgimp2.0-dev                           # the GIMP 2.10 plug-in and its tests (gimp-console-2.10)
-  debootstrap                                   # tools/gimp3-env: the GIMP 3 chroot (Debian 13)
+  debootstrap                                   # scripts/gimp3-env: the GIMP 3 chroot (Debian 13)
   xvfb xauth imagemagick                        # headless X and screen grabs for dialog screenshots
   clang libclang-rt-14-dev libomp-14-dev valgrind  # scripts/sanitize.sh, fuzz/run.sh: libFuzzer,
                                                 #   TSan with LLVM libomp + Archer, memcheck

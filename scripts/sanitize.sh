@@ -71,7 +71,7 @@ run_valgrind() {
   local vg=(valgrind --quiet --num-callers=50 --error-exitcode=99 --leak-check=full --show-leak-kinds=definite,indirect
             --errors-for-leak-kinds=definite,indirect --suppressions="$root/scripts/valgrind.supp")
   local log; log=$(mktemp)
-  export TEXSYNTH_EXEMPLARS="${TEXSYNTH_EXEMPLARS:-$root/examples}" OMP_NUM_THREADS=2
+  export TEXSYNTH_EXEMPLARS="${TEXSYNTH_EXEMPLARS:-$root/tests/exemplars}" OMP_NUM_THREADS=2
   export GEGL_PATH; GEGL_PATH=$(ops_path build)
   for cmd in "build/tests/reliability/test-bad-input" "build/tests/reliability/test-cancel 96 16" \
              "build/tests/engine/test-params" "build/tests/engine/test-pyramid"; do

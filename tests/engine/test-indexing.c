@@ -1,7 +1,7 @@
 /* Wrap/mirror indexing and the E-step's virtual-coordinate tables. */
 #include "test-util.h"
-#include "indexing.h"
-#include "level.h"
+#include "engine/indexing.h"
+#include "engine/level.h"
 
 static void
 test_wrap_mirror (void)

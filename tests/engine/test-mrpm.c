@@ -1,6 +1,6 @@
 /* MRPM candidate sets against brute-force k-NN in the same feature space. */
-#include "mrpm.h"
-#include "indexing.h"
+#include "engine/mrpm.h"
+#include "engine/indexing.h"
 #include "test-util.h"
 
 #include <math.h>

@@ -1,6 +1,6 @@
 /* Gaussian pyramid: depth, sizes, filtering, alpha handling. */
 #include "test-util.h"
-#include "pyramid.h"
+#include "engine/pyramid.h"
 
 #include <math.h>
 #include <stdlib.h>

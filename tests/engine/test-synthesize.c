@@ -1,7 +1,7 @@
 /* Whole-engine properties: exact exemplar pixels, determinism across
  * thread counts, seeds, transparency, cancel, tiny inputs, the E-step. */
 #include "test-util.h"
-#include "level.h"
+#include "engine/level.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -50,7 +50,7 @@ def die(message):
 
 def exemplars_dir():
     return os.environ.get("TEXSYNTH_EXEMPLARS") or os.path.join(
-        os.environ.get("TEXSYNTH_SOURCE_ROOT", "."), "examples")
+        os.environ.get("TEXSYNTH_SOURCE_ROOT", "."), "tests", "exemplars")
 
 
 def exemplar(name):

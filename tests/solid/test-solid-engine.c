@@ -4,7 +4,7 @@
  * memory estimate.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "test-util.h"
-#include "solid.h"
+#include "solid/solid.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -2,7 +2,8 @@
  * kept pixels, transparency, determinism across thread counts, errors.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "test-util.h"
-#include "tileable.h"
+#include "tileable/cuts.h"
+#include "tileable/shift.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -3,8 +3,8 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later
  */
 #include "test-util.h"
-#include "volume-file.h"
-#include "volume-io.h"
+#include "volume/volume.h"
+#include "volume/formats.h"
 
 #include <dirent.h>
 #include <errno.h>

@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later
  */
 #include "test-util.h"
-#include "volume-layout.h"
+#include "volume/layout.h"
 
 #include <stdlib.h>
 #include <string.h>

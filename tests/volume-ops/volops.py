@@ -30,7 +30,7 @@ def op_warnings(text, op):
 
 
 def atlas_extent(size):
-    """volume-layout.h: columns = ceil(sqrt(size)), rows = ceil(size / columns)."""
+    """common/volume/layout.h: columns = ceil(sqrt(size)), rows = ceil(size / columns)."""
     columns = 1
     while columns * columns < size:
         columns += 1

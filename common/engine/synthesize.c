@@ -1,0 +1,498 @@
+/* Coarse-to-fine texture optimization driver (Kwatra et al. 2005 with
+ * k-coherence search over MRPM candidate sets).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "level.h"
+#include "occurrence.h"
+#include "seam-placement.h"
+#include "rng.h"
+#include "error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A level stops iterating once fewer output pixels than this change. */
+#define TS_CONVERGED_FRACTION 0.002
+/* Occurrence penalty per unit of over-use, in exemplar variances. */
+#define TS_OCCURRENCE_STRENGTH 0.1f
+/* Width of the band around a tile edge whose coherence matters: the
+ * 7x7 windows that straddle it. */
+#define TS_SEAM_BAND 7
+
+typedef struct
+{
+  const TsParams *params;
+  TsProgressFunc  progress;
+  void           *user_data;
+  double          done, total;   /* work units, for the progress fraction */
+  TsCancel        cancel;        /* lets the steps ask `progress` midway    */
+} Run;
+
+static bool
+report (Run *run, double units, const char *stage)
+{
+  run->done += units;
+  if (!run->progress)
+    return true;
+  return run->progress (run->total > 0 ? fmin (1.0, run->done / run->total) : 1.0, stage,
+                        run->user_data);
+}
+
+/* Asked by OpenMP thread 0 (the caller's thread) from inside the steps. */
+static bool
+report_midway (void *data)
+{
+  return report (data, 0.0, "optimizing");
+}
+
+static size_t
+level_side (size_t side, size_t level)
+{
+  return (side + ((size_t) 1 << level) - 1) >> level;
+}
+
+/* Indices of the opaque pixels of an exemplar level. */
+static TsStatus
+list_opaque (const TsImage *ex, int32_t **list, size_t *count)
+{
+  size_t n = ts_image_pixel_count (ex), c = 0;
+
+  *list = malloc (n * sizeof (int32_t));
+  if (!*list)
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (size_t i = 0; i < n; i++)
+    if (ex->pixels[i * TS_CHANNELS + 3] > 0.0f)
+      (*list)[c++] = (int32_t) i;
+  *count = c;
+  return TS_OK;
+}
+
+/* Source coordinates and preserve weights of the initial map, resampled
+ * to `level` (nearest sample; weights averaged over the block). */
+static TsStatus
+initial_for_level (const TsParams *params, const TsImage *ex_level, size_t level,
+                   size_t w, size_t h, int32_t **source, float **preserve)
+{
+  size_t out_w = params->output_width, out_h = params->output_height, block = (size_t) 1 << level;
+
+  *source = malloc (w * h * sizeof (int32_t));
+  *preserve = params->preserve ? malloc (w * h * sizeof (float)) : NULL;
+  if (!*source || (params->preserve && !*preserve))
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (size_t y = 0; y < h; y++)
+    for (size_t x = 0; x < w; x++)
+      {
+        size_t fx = x << level, fy = y << level;
+        const int32_t *s = params->initial_source + 2 * (fy * out_w + fx);
+        size_t sx = (size_t) s[0] >> level, sy = (size_t) s[1] >> level;
+        sx = sx < ex_level->width ? sx : ex_level->width - 1;
+        sy = sy < ex_level->height ? sy : ex_level->height - 1;
+        (*source)[y * w + x] = (int32_t) (sy * ex_level->width + sx);
+        if (*preserve)
+          {
+            double sum = 0.0;
+            size_t n = 0;
+            for (size_t by = fy; by < fy + block && by < out_h; by++)
+              for (size_t bx = fx; bx < fx + block && bx < out_w; bx++, n++)
+                sum += params->preserve[by * out_w + bx];
+            (*preserve)[y * w + x] = (float) (sum / (double) n);
+          }
+      }
+  return TS_OK;
+}
+
+/* Random exemplar blocks of side `block` (Kwatra et al.'s random patches):
+ * unlike single random pixels, their votes agree, so the first E-step does
+ * not average the start into the exemplar's mean colour, which would
+ * collapse textures with flat areas onto them. */
+static void
+random_blocks (TsLevelState *state, const TsParams *params, size_t level, size_t block)
+{
+  const TsImage *ex = state->exemplar;
+  uint64_t jitter = ts_random (params->seed, (uint32_t) level, 0, 0, 4);
+  size_t ox = (size_t) (jitter % block), oy = (size_t) ((jitter >> 32) % block);
+
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
+    for (size_t x = 0; x < state->width; x++)
+      {
+        size_t bx = (x + ox) / block, by = ((size_t) y + oy) / block;
+        uint64_t r = ts_random (params->seed, (uint32_t) level, 0, by * 65536 + bx, 1);
+        int32_t corner = state->opaque[ts_random_below (r, state->opaque_count)];
+        size_t sx = (size_t) corner % ex->width + (x + ox) % block;
+        size_t sy = (size_t) corner / ex->width + ((size_t) y + oy) % block;
+        size_t p = (size_t) y * state->width + x;
+        int32_t s;
+
+        sx = sx < ex->width ? sx : ex->width - 1 - (sx - ex->width) % ex->width;
+        sy = sy < ex->height ? sy : ex->height - 1 - (sy - ex->height) % ex->height;
+        s = (int32_t) (sy * ex->width + sx);
+        if (ex->pixels[(size_t) s * TS_CHANNELS + 3] <= 0.0f)
+          s = state->opaque[ts_random_below (ts_random (params->seed, (uint32_t) level, 0, p, 5),
+                                             state->opaque_count)];
+        state->source[p] = s;
+      }
+}
+
+/* Starting sources of a level: random exemplar blocks at the coarsest
+ * level, else the children of the coarser level's sources. */
+static void
+start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t block,
+               const int32_t *coarser, size_t coarser_w, size_t coarser_ex_w)
+{
+  const TsImage *ex = state->exemplar;
+
+  if (!coarser)
+    random_blocks (state, params, level, block);
+  else
+    {
+#pragma omp parallel for schedule(static)
+      for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
+        for (size_t x = 0; x < state->width; x++)
+          {
+            size_t p = (size_t) y * state->width + x;
+            int32_t parent = coarser[((size_t) y / 2) * coarser_w + x / 2];
+            size_t sx = 2 * ((size_t) parent % coarser_ex_w) + (x & 1);
+            size_t sy = 2 * ((size_t) parent / coarser_ex_w) + ((size_t) y & 1);
+            sx = sx < ex->width ? sx : ex->width - 1;
+            sy = sy < ex->height ? sy : ex->height - 1;
+            state->source[p] = (int32_t) (sy * ex->width + sx);
+          }
+    }
+  if (state->preserve_source && !coarser)
+    memcpy (state->source, state->preserve_source, state->width * state->height * sizeof (int32_t));
+  /* Fully preserved pixels start (and stay: the E-step skips them) at
+   * their initial source, even where a coarser parent moved. */
+  for (size_t p = 0; state->preserve && p < state->width * state->height; p++)
+    if (state->preserve[p] >= 1.0f)
+      state->source[p] = state->preserve_source[p];
+}
+
+/* All iterations of all passes of one level. */
+static TsStatus
+optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t level)
+{
+  const TsParams *params = run->params;
+  size_t pixels = state->width * state->height;
+  TsHistogram *histogram = NULL;
+  TsOccurrence occurrence;
+  uint32_t *usage;
+  TsStatus status;
+  float occ_strength = TS_OCCURRENCE_STRENGTH;
+  size_t free_pixels = pixels;
+
+  /* Convergence is judged on the pixels that may change: with most of
+   * the output preserved, a fraction of all pixels would stop the
+   * optimization of the rest early. */
+  if (state->preserve)
+    {
+      free_pixels = 0;
+      for (size_t p = 0; p < pixels; p++)
+        free_pixels += state->preserve[p] < 1.0f;
+    }
+
+  usage = malloc (ts_image_pixel_count (state->exemplar) * sizeof (uint32_t));
+  if (!usage)
+    return TS_ERROR_OUT_OF_MEMORY;
+  status = ts_occurrence_init (&occurrence, state->exemplar, occ_strength);
+  if (status != TS_OK)
+    {
+      free (usage);
+      return status;
+    }
+  state->penalty = occ_strength > 0.0f ? occurrence.penalty : NULL;
+
+  if (params->histogram_matching)
+    {
+      histogram = malloc (sizeof *histogram);
+      if (!histogram || ts_histogram_init (histogram, state->exemplar) != TS_OK)
+        {
+          if (histogram)
+            ts_histogram_free (histogram);
+          free (histogram);
+          ts_occurrence_free (&occurrence);
+          free (usage);
+          return TS_ERROR_OUT_OF_MEMORY;
+        }
+    }
+
+  for (size_t pi = 0; pi < plan->passes && status == TS_OK; pi++)
+    {
+      const TsPass *pass = &plan->pass[pi];
+      size_t it;
+      for (it = 0; it < pass->max_iterations; it++)
+        {
+          uint32_t stream = (uint32_t) ts_random (params->seed, (uint32_t) level,
+                                                  (uint32_t) (pi * 1000 + it), 0, 2);
+          TsAxisGrid gx, gy;
+          TsMatch *matches;
+          size_t changed;
+
+          /* A new grid offset each iteration hides the grid's regularity. */
+          status = ts_axis_grid_init (&gx, state->width, pass->patch / 2, pass->spacing,
+                                      stream % pass->spacing, state->wrap_x);
+          if (status != TS_OK)
+            break;
+          status = ts_axis_grid_init (&gy, state->height, pass->patch / 2, pass->spacing,
+                                      (stream >> 8) % pass->spacing, state->wrap_y);
+          if (status != TS_OK)
+            {
+              ts_axis_grid_free (&gx);
+              break;
+            }
+          /* The M-step leaves the sources alone: one count serves the
+           * penalty now and the histogram after it. */
+          if (state->penalty || histogram)
+            ts_occurrence_count (state->source, pixels, usage,
+                                 ts_image_pixel_count (state->exemplar));
+          if (state->penalty)
+            ts_occurrence_update (&occurrence, usage, pixels, pass->patch, state->opaque_count);
+          matches = malloc (gx.centres * gy.centres * sizeof (TsMatch));
+          status = matches ? ts_mstep (state, &gx, &gy, pass, plan->k_use, stream, matches)
+                           : TS_ERROR_OUT_OF_MEMORY;
+          /* An iteration of a large level takes long: a cancel between
+           * its two steps halves the wait. */
+          if (status == TS_OK && !report (run, 0.0, "optimizing"))
+            status = TS_ERROR_CANCELLED;
+          if (status == TS_OK)
+            {
+              if (histogram)
+                ts_histogram_update (histogram, usage);
+              changed = ts_estep (state, &gx, &gy, matches, histogram);
+              if (ts_cancel_requested (state->cancel))
+                status = TS_ERROR_CANCELLED;
+            }
+          free (matches);
+          ts_axis_grid_free (&gx);
+          ts_axis_grid_free (&gy);
+          if (status != TS_OK)
+            break;
+          if (!report (run, (double) pixels, "optimizing"))
+            {
+              status = TS_ERROR_CANCELLED;
+              break;
+            }
+          if ((double) changed < TS_CONVERGED_FRACTION * (double) free_pixels)
+            {
+              it++;
+              break;
+            }
+        }
+      /* Credit the iterations convergence made unnecessary. */
+      run->done += (double) (pass->max_iterations - it) * (double) pixels;
+    }
+  if (histogram)
+    ts_histogram_free (histogram);
+  free (histogram);
+  ts_occurrence_free (&occurrence);
+  free (usage);
+  state->penalty = NULL;
+  return status;
+}
+
+static double
+planned_work (const TsParams *params, const TsPyramid *pyramid)
+{
+  double total = 0;
+  for (size_t l = 0; l < pyramid->levels; l++)
+    {
+      TsLevelPlan plan;
+      double pixels = (double) level_side (params->output_width, l) *
+                      (double) level_side (params->output_height, l);
+      ts_schedule_level (params, l, pyramid->levels, pyramid->level[l].width,
+                         pyramid->level[l].height, &plan);
+      total += pixels; /* MRPM of the level, about one iteration's work */
+      for (size_t p = 0; p < plan.passes; p++)
+        total += (double) plan.pass[p].max_iterations * pixels;
+    }
+  return total;
+}
+
+typedef struct
+{
+  TsImage         working;
+  TsPyramid       pyramid;
+  TsCandidateSet  candidates, coarser_candidates;
+  TsLevelState    state;
+  int32_t        *opaque;
+  int32_t        *coarser_source;
+  size_t          coarser_width, coarser_ex_width;
+  int32_t        *initial_source;
+  float          *initial_preserve;
+  float          *disagreement;
+} Work;
+
+static void
+work_free_level (Work *w)
+{
+  free (w->opaque);
+  free (w->initial_source);
+  free (w->initial_preserve);
+  w->opaque = NULL;
+  w->initial_source = NULL;
+  w->initial_preserve = NULL;
+}
+
+static void
+work_free (Work *w)
+{
+  work_free_level (w);
+  free (w->state.source);
+  free (w->coarser_source);
+  free (w->disagreement);
+  ts_candidate_set_free (&w->candidates);
+  ts_candidate_set_free (&w->coarser_candidates);
+  ts_pyramid_free (&w->pyramid);
+  ts_image_free (&w->working);
+}
+
+/* Rolls a finished wrap-around result so its tile edges run where the
+ * synthesis is most coherent. */
+static TsStatus
+place_tile_edges (TsLevelState *state)
+{
+  size_t sx, sy;
+  TsStatus status = ts_seam_best_shift (state->disagreement, state->width, state->height,
+                                        state->wrap_x, state->wrap_y, TS_SEAM_BAND, &sx, &sy);
+  if (status == TS_OK)
+    status = ts_seam_roll (state->source, state->width, state->height, sizeof (int32_t), sx, sy);
+  return status;
+}
+
+static TsStatus
+synthesize_level (Run *run, Work *w, size_t level)
+{
+  const TsParams *params = run->params;
+  const TsImage *ex = &w->pyramid.level[level];
+  TsLevelState *state = &w->state;
+  TsMrpmOptions options;
+  TsLevelPlan plan;
+  TsStatus status;
+  volatile int cancel = 0;
+
+  ts_schedule_level (params, level, w->pyramid.levels, ex->width, ex->height, &plan);
+  ts_mrpm_options_init (&options);
+  status = ts_mrpm_level (&w->pyramid, level, level + 1 < w->pyramid.levels ? &w->coarser_candidates : NULL,
+                          plan.k_level, &options, &cancel, &w->candidates);
+  if (status != TS_OK)
+    return status;
+  ts_candidate_set_free (&w->coarser_candidates);
+  if (!report (run, (double) level_side (params->output_width, level) *
+               (double) level_side (params->output_height, level), "matching exemplar"))
+    return TS_ERROR_CANCELLED;
+
+  memset (state, 0, sizeof *state);
+  state->exemplar = ex;
+  state->candidates = &w->candidates;
+  state->width = level_side (params->output_width, level);
+  state->height = level_side (params->output_height, level);
+  state->wrap_x = params->wrap_x;
+  state->wrap_y = params->wrap_y;
+  state->cancel = &run->cancel;
+  if ((status = list_opaque (ex, &w->opaque, &state->opaque_count)) != TS_OK)
+    return status;
+  state->opaque = w->opaque;
+  if (state->opaque_count == 0)
+    return TS_ERROR_TRANSPARENT_EXEMPLAR;
+  state->source = malloc (state->width * state->height * sizeof (int32_t));
+  if (!state->source)
+    return TS_ERROR_OUT_OF_MEMORY;
+  if (params->initial_source)
+    {
+      status = initial_for_level (params, ex, level, state->width, state->height,
+                                  &w->initial_source, &w->initial_preserve);
+      if (status != TS_OK)
+        return status;
+      state->preserve_source = w->initial_source;
+      state->preserve = w->initial_preserve;
+    }
+  start_sources (state, params, level, plan.pass[0].patch, w->coarser_source, w->coarser_width,
+                 w->coarser_ex_width);
+
+  if (level == 0 && (params->wrap_x || params->wrap_y) && !params->initial_source)
+    {
+      w->disagreement = calloc (state->width * state->height, sizeof (float));
+      if (!w->disagreement)
+        return TS_ERROR_OUT_OF_MEMORY;
+      state->disagreement = w->disagreement;
+    }
+  status = optimize_level (run, state, &plan, level);
+  if (status == TS_OK && state->disagreement)
+    status = place_tile_edges (state);
+  if (status != TS_OK)
+    return status;
+
+  /* The finished level seeds the next; candidates move down too. */
+  free (w->coarser_source);
+  w->coarser_source = state->source;
+  w->coarser_width = state->width;
+  w->coarser_ex_width = ex->width;
+  state->source = NULL;
+  w->coarser_candidates = w->candidates;
+  memset (&w->candidates, 0, sizeof w->candidates);
+  if (level > 0)
+    work_free_level (w);
+  return TS_OK;
+}
+
+static void
+write_result (const TsParams *params, const Work *w, TsImage *output)
+{
+  const TsImage *ex = &w->pyramid.level[0];
+  size_t n = params->output_width * params->output_height;
+
+  /* The result is the finest level's sources, looked up in the exemplar
+   * (alpha back to [0, 1] as ts_image_from_working does). */
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t p = 0; p < (ptrdiff_t) n; p++)
+    {
+      float *o = output->pixels + (size_t) p * TS_CHANNELS;
+      memcpy (o, ex->pixels + (size_t) w->coarser_source[p] * TS_CHANNELS, TS_CHANNELS * sizeof (float));
+      o[3] /= TS_ALPHA_SCALE;
+      if (params->source_map)
+        {
+          params->source_map[2 * p] = (int32_t) ((size_t) w->coarser_source[p] % ex->width);
+          params->source_map[2 * p + 1] = (int32_t) ((size_t) w->coarser_source[p] / ex->width);
+        }
+    }
+}
+
+TsStatus
+ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
+               TsProgressFunc progress, void *user_data, TsError *error)
+{
+  Run run = { .params = params, .progress = progress, .user_data = user_data };
+  Work w;
+  TsStatus status;
+
+  ts_cancel_init (&run.cancel, progress ? report_midway : NULL, &run);
+
+  status = ts_params_validate (params, exemplar, error);
+  if (status != TS_OK)
+    return status;
+  if (!output || !output->pixels || output->width != params->output_width ||
+      output->height != params->output_height)
+    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT,
+                    "the output image must be allocated with %zux%zu pixels",
+                    params->output_width, params->output_height);
+
+  memset (&w, 0, sizeof w);
+  status = ts_image_to_working (exemplar, &w.working);
+  if (status == TS_OK)
+    status = ts_pyramid_build (&w.working, ts_schedule_levels (exemplar), &w.pyramid);
+  if (status == TS_OK)
+    {
+      run.total = planned_work (params, &w.pyramid);
+      for (size_t l = w.pyramid.levels; l-- > 0 && status == TS_OK;)
+        status = synthesize_level (&run, &w, l);
+    }
+  if (status == TS_OK)
+    {
+      write_result (params, &w, output);
+      report (&run, 0, "done");
+    }
+  work_free (&w);
+  if (status != TS_OK)
+    return ts_fail (error, status, "%s", ts_status_string (status));
+  return TS_OK;
+}

@@ -1,0 +1,113 @@
+/* Solid synthesis internals: the state of one level of the volume, its
+ * M-step and E-step, and Kopf et al.'s histogram matching (internal).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#ifndef TS_SOLID_H
+#define TS_SOLID_H
+
+#include "engine/level.h"
+
+#define TS_SOLID_AXES 3
+/* Kopf et al. 2007 use 16 bins per channel. */
+#define TS_SOLID_HISTOGRAM_BINS 16
+/* The E-step visits voxels in this many random batches, refreshing the
+ * histogram weights between them. */
+#define TS_SOLID_BATCHES 16
+/* Below this edge a level's loops run on one thread: the work is too
+ * small to repay waking the others, above all on a busy machine. */
+#define TS_SOLID_PARALLEL_EDGE 32
+
+/* One slice orientation at one level. */
+typedef struct
+{
+  const TsImage        *exemplar;    /* working exemplar level; NULL = free */
+  const TsCandidateSet *candidates;
+  const int32_t        *opaque;      /* indices of pixels with alpha > 0    */
+  size_t                opaque_count;
+  float                *excess;      /* histogram excess per exemplar pixel, or NULL */
+} TsSolidView;
+
+typedef struct
+{
+  size_t       n;          /* edge of the cube at this level            */
+  bool         periodic;
+  float       *value;      /* n^3 voxels, working format (alpha scaled) */
+  int32_t     *source[TS_SOLID_AXES]; /* exemplar index per voxel and
+                                          orientation; NULL where free */
+  TsSolidView  view[TS_SOLID_AXES];
+} TsSolidLevel;
+
+/* A matched slice neighbourhood: exemplar centre (-1 = none) and robust
+ * vote weight. */
+typedef struct
+{
+  int32_t centre;
+  float   weight;
+} TsSolidMatch;
+
+/* The in-slice axes (u, v) of the slices orthogonal to `axis`. */
+static inline void
+ts_solid_plane_axes (int axis, int *u, int *v)
+{
+  *u = axis == 0 ? 1 : 0;
+  *v = axis == 2 ? 1 : 2;
+}
+
+static inline size_t
+ts_solid_stride (size_t n, int axis)
+{
+  return axis == 0 ? 1 : (axis == 1 ? n : n * n);
+}
+
+/* Where the match of orientation `axis`, slice t, grid centre (ju, jv) is
+ * stored: along x the slice index runs fastest, so that consecutive
+ * neighbourhoods share cache lines; otherwise the in-slice u does. */
+static inline size_t
+ts_solid_match_index (int axis, size_t n, size_t cu, size_t cv, size_t t, size_t ju, size_t jv)
+{
+  return axis == 0 ? (jv * cu + ju) * n + t : (t * cv + jv) * cu + ju;
+}
+
+/* M-step of one orientation: the best exemplar neighbourhood for the
+ * slice neighbourhood of every centre (every slice, sparse grid gu x gv
+ * within it). `matches` has n * gu->centres * gv->centres entries. */
+TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu,
+                         const TsAxisGrid *gv, const TsPass *pass, size_t k_use,
+                         uint32_t seed_stream, TsSolidMatch *matches,
+                         TsCancel *cancel);
+
+/* --- histogram matching --------------------------------------------------- */
+
+typedef struct
+{
+  float   lo[3], scale[3];                             /* bin = (v - lo) * scale */
+  float   target[3][TS_SOLID_HISTOGRAM_BINS];          /* exemplars' density      */
+  int64_t count[3][TS_SOLID_HISTOGRAM_BINS];           /* voxels per bin          */
+  int64_t total;                                       /* opaque voxels counted   */
+} TsSolidHistogram;
+
+typedef int64_t TsSolidHistogramDelta[3][TS_SOLID_HISTOGRAM_BINS];
+
+/* Bins and target densities from the opaque pixels of the level's
+ * exemplars, then the counts of the level's volume. */
+void ts_solid_histogram_init (TsSolidHistogram *h, const TsSolidLevel *level);
+/* Records a voxel's change from `before` to `after` (working values). */
+void ts_solid_histogram_move (const TsSolidHistogram *h, TsSolidHistogramDelta delta,
+                              const float *before, const float *after);
+void ts_solid_histogram_apply (TsSolidHistogram *h, TsSolidHistogramDelta delta);
+/* Every exemplar pixel's excess in every view: the sum over channels of
+ * how far the volume's density in the pixel's bin exceeds the target
+ * (0 = not over-represented). */
+void ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level);
+
+/* --- E-step ---------------------------------------------------------------- */
+
+/* Voxels whose `batch_of` entry equals `batch` become the vote closest to
+ * the weighted mean of all matched slice neighbourhoods covering them;
+ * their per-orientation sources follow. With `histogram`, changes are
+ * added to `delta`. Returns the number of voxels whose value changed. */
+size_t ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
+                       TsSolidMatch *const matches[TS_SOLID_AXES], const uint8_t *batch_of,
+                       uint8_t batch, const TsSolidHistogram *histogram,
+                       TsSolidHistogramDelta delta);
+
+#endif

@@ -1,0 +1,574 @@
+/* Solid texture synthesis from 2D exemplars (Kopf et al. 2007): texture
+ * optimization over a cube, coarse to fine, with k-coherence search over
+ * MRPM candidate sets in each slice orientation and histogram matching.
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "solid.h"
+#include "engine/pyramid.h"
+#include "engine/rng.h"
+#include "engine/error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A level stops iterating once fewer voxels than this change. */
+#define TS_SOLID_CONVERGED_FRACTION 0.002
+/* The coarsest volume level keeps at least this edge where it can. */
+#define TS_SOLID_COARSEST_EDGE 16
+/* Default neighbourhood sides: large first, then small. */
+#define TS_SOLID_PATCH 9
+#define TS_SOLID_FINE_PATCH 5
+
+typedef struct
+{
+  const TsImage  *input;
+  TsImage         working;
+  TsPyramid       pyramid;
+  TsCandidateSet  candidates, coarser_candidates;
+  int32_t        *opaque;
+  size_t          opaque_count;
+  float          *excess;
+} Exemplar;
+
+typedef struct
+{
+  const TsSolidParams *params;
+  TsProgressFunc       progress;
+  void                *user_data;
+  double               done, total;
+  volatile int         cancel;
+  TsCancel             midway;  /* raised with `cancel`; lets the steps ask midway */
+  Exemplar             exemplar[TS_SOLID_AXES];
+  int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
+  size_t               exemplars;
+  size_t               levels;      /* volume levels synthesised           */
+  size_t               ex_levels;   /* exemplar levels (>= levels): the
+                                       coarser ones only seed MRPM        */
+  TsSolidLevel         level, coarser;
+  float               *volume;                     /* the caller's: finest values */
+} Run;
+
+static bool
+report (Run *run, double units, const char *stage)
+{
+  run->done += units;
+  if (run->progress && !run->progress (run->total > 0 ? fmin (1.0, run->done / run->total) : 1.0,
+                                       stage, run->user_data))
+    {
+      run->cancel = 1;
+      ts_cancel_request (&run->midway);
+    }
+  return !run->cancel;
+}
+
+/* Asked by OpenMP thread 0 (the caller's thread) from inside the M-step. */
+static bool
+report_midway (void *data)
+{
+  return report (data, 0.0, "optimizing volume");
+}
+
+static size_t
+level_edge (size_t n, size_t level)
+{
+  return (n + ((size_t) 1 << level) - 1) >> level;
+}
+
+static size_t
+cube (size_t n)
+{
+  return n * n * n;
+}
+
+/* The 2D schedule with solid defaults: the same neighbourhood fitting,
+ * candidate counts and iteration counts per level. */
+static void
+plan_level (const Run *run, size_t level, TsLevelPlan *plan)
+{
+  const TsSolidParams *sp = run->params;
+  size_t ex_w = SIZE_MAX, ex_h = SIZE_MAX, n = level_edge (sp->size, level);
+  TsParams p;
+
+  ts_params_init (&p);
+  p.quality = sp->quality;
+  p.max_iterations = sp->max_iterations;
+  p.patch_size = sp->patch_size ? sp->patch_size : TS_SOLID_PATCH;
+  p.fine_patch_size = p.patch_size < TS_SOLID_FINE_PATCH ? p.patch_size : TS_SOLID_FINE_PATCH;
+  p.wrap_x = p.wrap_y = sp->periodic;
+  for (size_t e = 0; e < run->exemplars; e++)
+    {
+      const TsImage *ex = &run->exemplar[e].pyramid.level[level];
+      ex_w = ex->width < ex_w ? ex->width : ex_w;
+      ex_h = ex->height < ex_h ? ex->height : ex_h;
+    }
+  /* A neighbourhood no wider than the volume level itself. */
+  ex_w = ex_w < n + 4 ? ex_w : n + 4;
+  ts_schedule_level (&p, level, run->levels, ex_w, ex_h, plan);
+}
+
+static double
+planned_work (const Run *run)
+{
+  double total = 0;
+  for (size_t l = 0; l < run->levels; l++)
+    {
+      TsLevelPlan plan;
+      double voxels = (double) cube (level_edge (run->params->size, l));
+      plan_level (run, l, &plan);
+      total += voxels;
+      for (size_t p = 0; p < plan.passes; p++)
+        total += (double) plan.pass[p].max_iterations * voxels;
+    }
+  return total;
+}
+
+static void
+level_free (TsSolidLevel *level, const float *keep)
+{
+  if (level->value != keep)
+    free (level->value);
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    free (level->source[a]);
+  memset (level, 0, sizeof *level);
+}
+
+static void
+run_free (Run *run)
+{
+  level_free (&run->level, run->volume);
+  level_free (&run->coarser, run->volume);
+  for (size_t e = 0; e < run->exemplars; e++)
+    {
+      Exemplar *ex = &run->exemplar[e];
+      ts_image_free (&ex->working);
+      ts_pyramid_free (&ex->pyramid);
+      ts_candidate_set_free (&ex->candidates);
+      ts_candidate_set_free (&ex->coarser_candidates);
+      free (ex->opaque);
+      free (ex->excess);
+    }
+}
+
+/* Working pyramids of the distinct exemplars, all with the same depth. */
+static TsStatus
+prepare_exemplars (Run *run, const TsImage *const exemplars[3])
+{
+  size_t levels = SIZE_MAX;
+
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    {
+      run->exemplar_of[a] = -1;
+      if (!exemplars[a])
+        continue;
+      for (int b = 0; b < a; b++)
+        if (exemplars[b] == exemplars[a])
+          run->exemplar_of[a] = run->exemplar_of[b];
+      if (run->exemplar_of[a] < 0)
+        {
+          run->exemplar_of[a] = (int) run->exemplars;
+          run->exemplar[run->exemplars++].input = exemplars[a];
+        }
+    }
+  for (size_t e = 0; e < run->exemplars; e++)
+    {
+      size_t d = ts_schedule_levels (run->exemplar[e].input);
+      levels = d < levels ? d : levels;
+    }
+  run->ex_levels = levels;
+  while (levels > 1 && level_edge (run->params->size, levels - 1) < TS_SOLID_COARSEST_EDGE)
+    levels--;
+  run->levels = levels;
+  for (size_t e = 0; e < run->exemplars; e++)
+    {
+      Exemplar *ex = &run->exemplar[e];
+      TsStatus status = ts_image_to_working (ex->input, &ex->working);
+      if (status == TS_OK)
+        status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
+      if (status != TS_OK)
+        return status;
+    }
+  return TS_OK;
+}
+
+/* Candidate sets, opaque lists and histogram excesses of every exemplar at
+ * `level`, and the views that point at them; only the candidate sets at
+ * levels coarser than the volume's coarsest. */
+static TsStatus
+prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
+{
+  TsMrpmOptions options;
+
+  ts_mrpm_options_init (&options);
+  for (size_t e = 0; e < run->exemplars; e++)
+    {
+      Exemplar *ex = &run->exemplar[e];
+      const TsImage *img = &ex->pyramid.level[level];
+      size_t pixels = ts_image_pixel_count (img);
+      TsStatus status = ts_mrpm_level (&ex->pyramid, level,
+                                       level + 1 < run->ex_levels ? &ex->coarser_candidates : NULL,
+                                       plan->k_level, &options, &run->cancel, &ex->candidates);
+      if (status != TS_OK)
+        return status;
+      ts_candidate_set_free (&ex->coarser_candidates);
+      if (level >= run->levels)
+        {
+          /* Too coarse for the volume: its candidates only seed the next
+           * level's MRPM, which would otherwise search by brute force. */
+          ex->coarser_candidates = ex->candidates;
+          memset (&ex->candidates, 0, sizeof ex->candidates);
+          continue;
+        }
+      free (ex->opaque);
+      free (ex->excess);
+      ex->opaque = malloc (pixels * sizeof (int32_t));
+      ex->excess = malloc (pixels * sizeof (float));
+      if (!ex->opaque || !ex->excess)
+        return TS_ERROR_OUT_OF_MEMORY;
+      ex->opaque_count = 0;
+      for (size_t i = 0; i < pixels; i++)
+        {
+          ex->excess[i] = 0.0f;
+          if (img->pixels[i * TS_CHANNELS + 3] > 0.0f)
+            ex->opaque[ex->opaque_count++] = (int32_t) i;
+        }
+      if (ex->opaque_count == 0)
+        return TS_ERROR_TRANSPARENT_EXEMPLAR;
+    }
+  if (level >= run->levels)
+    return TS_OK;
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    {
+      TsSolidView *view = &run->level.view[a];
+      memset (view, 0, sizeof *view);
+      if (run->exemplar_of[a] < 0)
+        continue;
+      Exemplar *ex = &run->exemplar[run->exemplar_of[a]];
+      view->exemplar = &ex->pyramid.level[level];
+      view->candidates = &ex->candidates;
+      view->opaque = ex->opaque;
+      view->opaque_count = ex->opaque_count;
+      view->excess = run->params->histogram_matching ? ex->excess : NULL;
+    }
+  return TS_OK;
+}
+
+static TsStatus
+level_alloc (Run *run, size_t level)
+{
+  TsSolidLevel *l = &run->level;
+  size_t n = level_edge (run->params->size, level), voxels = cube (n);
+
+  l->n = n;
+  l->periodic = run->params->periodic;
+  l->value = level == 0 ? run->volume : malloc (voxels * TS_CHANNELS * sizeof (float));
+  if (!l->value)
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    if (run->exemplar_of[a] >= 0 && !(l->source[a] = malloc (voxels * sizeof (int32_t))))
+      return TS_ERROR_OUT_OF_MEMORY;
+  return TS_OK;
+}
+
+/* The voxel's value: of its orientations' source colours, the one
+ * closest to their mean (a sharp start that agrees with most of them). */
+static void
+value_from_sources (TsSolidLevel *l, size_t p)
+{
+  const float *colour[TS_SOLID_AXES];
+  float mean[TS_CHANNELS] = { 0, 0, 0, 0 }, best = INFINITY;
+  int count = 0, chosen = -1;
+
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    {
+      colour[a] = NULL;
+      if (!l->source[a])
+        continue;
+      colour[a] = l->view[a].exemplar->pixels + (size_t) l->source[a][p] * TS_CHANNELS;
+      for (int c = 0; c < TS_CHANNELS; c++)
+        mean[c] += colour[a][c];
+      count++;
+    }
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    {
+      float d = 0.0f;
+      if (!colour[a])
+        continue;
+      for (int c = 0; c < TS_CHANNELS; c++)
+        {
+          float e = colour[a][c] - mean[c] / (float) count;
+          d += e * e;
+        }
+      if (d < best)
+        {
+          best = d;
+          chosen = a;
+        }
+    }
+  memcpy (l->value + p * TS_CHANNELS, colour[chosen], TS_CHANNELS * sizeof (float));
+}
+
+/* Opaque source at exemplar (sx, sy), mirrored inside; a random opaque
+ * pixel where that is transparent. */
+static int32_t
+opaque_source (const TsSolidView *view, size_t sx, size_t sy, uint64_t random)
+{
+  const TsImage *ex = view->exemplar;
+  size_t s;
+
+  sx = sx < ex->width ? sx : ex->width - 1 - (sx - ex->width) % ex->width;
+  sy = sy < ex->height ? sy : ex->height - 1 - (sy - ex->height) % ex->height;
+  s = sy * ex->width + sx;
+  if (ex->pixels[s * TS_CHANNELS + 3] > 0.0f)
+    return (int32_t) s;
+  return view->opaque[ts_random_below (random, view->opaque_count)];
+}
+
+/* Coarsest start: random exemplar blocks per orientation, whose votes
+ * agree, rather than single random pixels. */
+static void
+start_random_blocks (Run *run, size_t level, size_t block)
+{
+  TsSolidLevel *l = &run->level;
+  size_t n = l->n;
+  uint32_t seed = run->params->seed;
+
+#pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
+  for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
+    for (size_t x = 0; x < n; x++)
+      {
+        size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
+        uint64_t cell = ((xyz[2] / block) * 1024 + xyz[1] / block) * 1024 + x / block;
+        for (int a = 0; a < TS_SOLID_AXES; a++)
+          {
+            const TsSolidView *view = &l->view[a];
+            int u, v;
+            if (!l->source[a])
+              continue;
+            ts_solid_plane_axes (a, &u, &v);
+            uint64_t r = ts_random (seed, (uint32_t) level, 0, cell, 1 + (uint32_t) a);
+            int32_t corner = view->opaque[ts_random_below (r, view->opaque_count)];
+            size_t w = view->exemplar->width;
+            l->source[a][p] = opaque_source (view, (size_t) corner % w + xyz[u] % block,
+                                             (size_t) corner / w + xyz[v] % block,
+                                             ts_random (seed, (uint32_t) level, 0, p, 5));
+          }
+        value_from_sources (l, p);
+      }
+}
+
+/* Finer start: each voxel's sources are its parent's, refined to the
+ * child pixel of the finer exemplar level. */
+static void
+start_from_coarser (Run *run, size_t level)
+{
+  TsSolidLevel *l = &run->level, *c = &run->coarser;
+  size_t n = l->n, cn = c->n;
+  uint32_t seed = run->params->seed;
+
+#pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
+  for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
+    for (size_t x = 0; x < n; x++)
+      {
+        size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
+        size_t parent = ((xyz[2] / 2) * cn + xyz[1] / 2) * cn + x / 2;
+        for (int a = 0; a < TS_SOLID_AXES; a++)
+          {
+            int u, v;
+            if (!l->source[a])
+              continue;
+            ts_solid_plane_axes (a, &u, &v);
+            size_t cw = c->view[a].exemplar->width, s = (size_t) c->source[a][parent];
+            l->source[a][p] = opaque_source (&l->view[a], 2 * (s % cw) + (xyz[u] & 1),
+                                             2 * (s / cw) + (xyz[v] & 1),
+                                             ts_random (seed, (uint32_t) level, 0, p, 6));
+          }
+        value_from_sources (l, p);
+      }
+}
+
+/* Every voxel's E-step batch for this iteration: a random voxel order at
+ * batch granularity, the same for any thread count. */
+static void
+assign_batches (uint8_t *batch_of, size_t voxels, uint32_t seed, uint32_t stream)
+{
+#pragma omp parallel for schedule(static) if (voxels >= TS_SOLID_PARALLEL_EDGE * TS_SOLID_PARALLEL_EDGE * TS_SOLID_PARALLEL_EDGE)
+  for (ptrdiff_t p = 0; p < (ptrdiff_t) voxels; p++)
+    batch_of[p] = (uint8_t) ts_random_below (ts_random (seed, stream, 0, (uint64_t) p, 9),
+                                             TS_SOLID_BATCHES);
+}
+
+typedef struct
+{
+  TsAxisGrid    gu, gv;
+  TsSolidMatch *matches[TS_SOLID_AXES];
+} Iteration;
+
+static void
+iteration_free (Iteration *it)
+{
+  ts_axis_grid_free (&it->gu);
+  ts_axis_grid_free (&it->gv);
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    free (it->matches[a]);
+}
+
+/* One M-step (all orientations) and one E-step (all batches); sets
+ * *changed to the number of voxels whose value changed. */
+static TsStatus
+iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *batch_of,
+         TsSolidHistogram *histogram, size_t *changed)
+{
+  TsSolidLevel *l = &run->level;
+  size_t n = l->n, voxels = cube (n), radius = pass->patch / 2;
+  double share = (double) voxels / (double) (TS_SOLID_AXES + 1);
+  Iteration it;
+  TsSolidHistogramDelta delta;
+  TsStatus status;
+
+  memset (&it, 0, sizeof it);
+  memset (delta, 0, sizeof delta);
+  *changed = 0;
+  /* A new grid offset each iteration hides the grid's regularity. */
+  status = ts_axis_grid_init (&it.gu, n, radius, pass->spacing, stream % pass->spacing, l->periodic);
+  if (status == TS_OK)
+    status = ts_axis_grid_init (&it.gv, n, radius, pass->spacing, (stream >> 8) % pass->spacing,
+                                l->periodic);
+  for (int a = 0; a < TS_SOLID_AXES && status == TS_OK; a++)
+    {
+      if (!l->source[a])
+        continue;
+      it.matches[a] = malloc (n * it.gu.centres * it.gv.centres * sizeof (TsSolidMatch));
+      status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, stream + (uint32_t) a,
+                                               it.matches[a], &run->midway)
+                             : TS_ERROR_OUT_OF_MEMORY;
+      if (status == TS_OK && !report (run, share, "optimizing volume"))
+        status = TS_ERROR_CANCELLED;
+    }
+  if (status == TS_OK)
+    assign_batches (batch_of, voxels, run->params->seed, stream);
+  for (uint8_t b = 0; b < TS_SOLID_BATCHES && status == TS_OK; b++)
+    {
+      if (histogram)
+        ts_solid_histogram_excess (histogram, l);
+      *changed += ts_solid_estep (l, &it.gu, &it.gv, it.matches, batch_of, b, histogram, delta);
+      if (histogram)
+        ts_solid_histogram_apply (histogram, delta);
+      if (ts_cancel_poll (&run->midway))
+        status = TS_ERROR_CANCELLED;
+    }
+  if (status == TS_OK && !report (run, share, "optimizing volume"))
+    status = TS_ERROR_CANCELLED;
+  iteration_free (&it);
+  return status;
+}
+
+static TsStatus
+optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
+{
+  size_t voxels = cube (run->level.n);
+  uint8_t *batch_of = malloc (voxels);
+  TsSolidHistogram histogram;
+  TsStatus status = batch_of ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+
+  if (run->params->histogram_matching)
+    ts_solid_histogram_init (&histogram, &run->level);
+  for (size_t pi = 0; pi < plan->passes && status == TS_OK; pi++)
+    {
+      const TsPass *pass = &plan->pass[pi];
+      size_t it;
+      for (it = 0; it < pass->max_iterations && status == TS_OK; it++)
+        {
+          uint32_t stream = (uint32_t) ts_random (run->params->seed, (uint32_t) level,
+                                                  (uint32_t) (pi * 1000 + it), 0, 2);
+          size_t changed;
+          status = iterate (run, pass, plan->k_use, stream, batch_of,
+                            run->params->histogram_matching ? &histogram : NULL, &changed);
+          if (status == TS_OK && (double) changed < TS_SOLID_CONVERGED_FRACTION * (double) voxels)
+            {
+              it++;
+              break;
+            }
+        }
+      /* Credit the iterations convergence made unnecessary. */
+      run->done += (double) (pass->max_iterations - it) * (double) voxels;
+    }
+  free (batch_of);
+  return status;
+}
+
+static TsStatus
+synthesize_level (Run *run, size_t level)
+{
+  TsLevelPlan plan;
+  TsStatus status;
+
+  /* The finished level becomes the parent of this one. */
+  level_free (&run->coarser, run->volume);
+  run->coarser = run->level;
+  memset (&run->level, 0, sizeof run->level);
+
+  plan_level (run, level, &plan);
+  status = prepare_views (run, level, &plan);
+  if (status == TS_OK && !report (run, (double) cube (level_edge (run->params->size, level)),
+                                  "matching exemplar"))
+    status = TS_ERROR_CANCELLED;
+  if (status == TS_OK)
+    status = level_alloc (run, level);
+  if (status != TS_OK)
+    return status;
+  if (level + 1 == run->levels)
+    start_random_blocks (run, level, plan.pass[0].patch);
+  else
+    start_from_coarser (run, level);
+  level_free (&run->coarser, run->volume);
+  for (size_t e = 0; e < run->exemplars; e++)
+    {
+      /* This level's candidates seed the next finer level's MRPM. */
+      run->exemplar[e].coarser_candidates = run->exemplar[e].candidates;
+      memset (&run->exemplar[e].candidates, 0, sizeof (TsCandidateSet));
+    }
+  return optimize_level (run, level, &plan);
+}
+
+TsStatus
+ts_synthesize_solid (const TsSolidParams *params, const TsImage *const exemplars[3], float *volume,
+                     TsProgressFunc progress, void *user_data, TsError *error)
+{
+  Run run;
+  TsStatus status = ts_solid_params_validate (params, exemplars, error);
+
+  if (status != TS_OK)
+    return status;
+  if (!volume)
+    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no volume to write into");
+  memset (&run, 0, sizeof run);
+  run.params = params;
+  run.progress = progress;
+  run.user_data = user_data;
+  run.volume = volume;
+  ts_cancel_init (&run.midway, progress ? report_midway : NULL, &run);
+  status = prepare_exemplars (&run, exemplars);
+  if (status == TS_OK)
+    {
+      run.total = planned_work (&run);
+      for (size_t l = run.ex_levels; l-- > run.levels && status == TS_OK;)
+        {
+          TsLevelPlan plan;
+          plan_level (&run, l, &plan);
+          status = prepare_views (&run, l, &plan);
+        }
+      for (size_t l = run.levels; l-- > 0 && status == TS_OK;)
+        status = synthesize_level (&run, l);
+    }
+  if (status == TS_OK)
+    {
+      size_t voxels = cube (params->size);
+      for (size_t p = 0; p < voxels; p++)
+        volume[p * TS_CHANNELS + 3] /= TS_ALPHA_SCALE;
+      report (&run, 0, "done");
+    }
+  run_free (&run);
+  if (status != TS_OK)
+    return ts_fail (error, status, "%s", ts_status_string (status));
+  return TS_OK;
+}
