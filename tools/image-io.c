@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
+#include "op-lab.h"
 
 #include <gegl.h>
 #include <stdio.h>
@@ -63,8 +64,9 @@ ts_io_load (const char *path, TsImage *image, char *why, size_t why_size)
         snprintf (why, why_size, "out of memory loading '%s'", path);
       return false;
     }
-  gegl_buffer_get (buffer, &extent, 1.0, babl_format (LAB_FORMAT), image->pixels,
-                   GEGL_AUTO_ROWSTRIDE, GEGL_ABYSS_NONE);
+  /* Fixed arithmetic, as the ops read exemplars (op-lab.h): babl's
+   * timing-chosen paths would give each process its own numbers. */
+  ts_op_read_lab (buffer, &extent, image->pixels);
   g_object_unref (buffer);
   image->width = (size_t) extent.width;
   image->height = (size_t) extent.height;

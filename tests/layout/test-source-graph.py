@@ -75,7 +75,7 @@ if not any(f.startswith("common" + os.sep + "engine") for f in files):
 for f in files:
     text = open(os.path.join(root, f), encoding="utf-8").read()
     for name in INCLUDE.findall(text):
-        target = resolve(f, name, ["common", f.split(os.sep)[0]])
+        target = resolve(f, name, ["common", f.split(os.sep)[0], "operations"])
         if target is None:
             continue  # GEGL's gegl-op.h and the op's own .c by name
         module, target_module = os.path.splitext(f)[0], os.path.splitext(target)[0]
