@@ -151,6 +151,9 @@ typedef struct
   int      max_iterations;
   bool     histogram_matching;
   size_t   memory_limit;
+  /* Optional: receives 2 int32 per pixel, the input (x, y) each output
+   * pixel was copied from (the identity where the picture is kept). */
+  int32_t *source_map;
 } TsTileableParams;
 
 /* Fill `params` with the defaults (both directions, default seam width,

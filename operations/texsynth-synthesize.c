@@ -8,6 +8,7 @@
 #include <glib/gi18n-lib.h>
 
 #include "op-common.h"
+#include "op-source-map.h"
 
 #ifdef GEGL_PROPERTIES
 
@@ -59,6 +60,12 @@ get_bounding_box (GeglOperation *operation)
 }
 
 static void
+prepare (GeglOperation *operation)
+{
+  ts_op_prepare_source_map (operation, GEGL_PROPERTIES (operation)->source_map);
+}
+
+static void
 fill_params (GeglProperties *o, TsParams *params)
 {
   ts_params_init (params);
@@ -84,6 +91,8 @@ process (GeglOperation       *operation,
   GeglProperties *o = GEGL_PROPERTIES (operation);
   TsParams params;
   TsImage exemplar, result = { 0, 0, NULL };
+  int32_t *sources = NULL;
+  GeglRectangle box = ts_op_required_input (operation);
   TsError error = { TS_OK, "" };
   TsOpProgress progress;
   TsStatus status;
@@ -96,6 +105,17 @@ process (GeglOperation       *operation,
     }
 
   status = ts_op_alloc_output (&params, &exemplar, &result, &error);
+  if (status == TS_OK && o->source_map)
+    {
+      params.source_map = sources = g_try_malloc (result.width * result.height * 2 * sizeof (int32_t));
+      if (!sources)
+        {
+          status = error.status = TS_ERROR_OUT_OF_MEMORY;
+          g_snprintf (error.message, sizeof error.message,
+                      _("out of memory allocating the %zux%zu source map"),
+                      result.width, result.height);
+        }
+    }
   if (status == TS_OK)
     {
       ts_op_progress_init (&progress, operation);
@@ -108,12 +128,19 @@ process (GeglOperation       *operation,
 
   /* A failure still yields a defined (transparent) image, and TRUE, so
    * that a graph goes on rendering and the warning says what went wrong. */
-  if (status == TS_OK)
+  if (status == TS_OK && sources)
+    {
+      if (!ts_op_write_source_map (output, roi, sources, result.width, result.height, 0, 0,
+                                   box.x, box.y))
+        g_warning ("%s: %s", gegl_operation_get_name (operation), _("out of memory"));
+    }
+  else if (status == TS_OK)
     ts_op_write_output (output, roi, &result, 0, 0);
   else
     ts_op_fail (operation, output, roi,
                 error.message[0] ? error.message : ts_status_string (status));
 
+  g_free (sources);
   g_free (result.pixels);
   g_free (exemplar.pixels);
   return TRUE;
@@ -125,6 +152,7 @@ gegl_op_class_init (GeglOpClass *klass)
   GeglOperationClass       *operation_class = GEGL_OPERATION_CLASS (klass);
 
   ts_op_class_init_whole_image (operation_class, get_bounding_box, process);
+  operation_class->prepare = prepare;
 
   gegl_operation_class_set_keys (operation_class,
     "name",               "texsynth:synthesize",
