@@ -122,6 +122,40 @@ TsStatus ts_synthesize (const TsParams *params,
                         void           *user_data,
                         TsError        *error);
 
+/* --- Matching on more than colour ------------------------------------- */
+
+/* A map aligned with the exemplar (same size): `channels` floats per pixel
+ * (1 to TS_MAX_FEATURE_CHANNELS), e.g. a height map, a normal map or a
+ * mask, in [0, 1]. */
+#define TS_MAX_FEATURE_CHANNELS 4
+#define TS_MAX_FEATURE_WEIGHT 10.0
+typedef struct
+{
+  size_t       width;
+  size_t       height;
+  size_t       channels;
+  const float *values;
+} TsFeatureMap;
+
+/* The image to synthesise from when features count in the match
+ * ("appearance space", Lefebvre and Hoppe 2006): each exemplar pixel's Lab
+ * beside its features times `weight` (0 .. TS_MAX_FEATURE_WEIGHT; at 1 a
+ * feature's range 0..1 weighs as L's 0..100), turned by PCA onto the three
+ * directions of largest variance, alpha kept. Synthesise it with a
+ * source_map and copy the exemplar's pixels by that map
+ * (ts_copy_by_source_map) for colours. `matching` is allocated here (free
+ * its pixels with free()); on failure it is left empty. */
+TsStatus ts_feature_matching_image (const TsImage      *exemplar,
+                                    const TsFeatureMap *features,
+                                    double              weight,
+                                    TsImage            *matching,
+                                    TsError            *error);
+
+/* output pixel i = exemplar pixel source_map[2i], source_map[2i + 1]
+ * (coordinates as TsParams.source_map gives them, all inside the
+ * exemplar); `output` is allocated by the caller. */
+void ts_copy_by_source_map (const TsImage *exemplar, const int32_t *source_map, TsImage *output);
+
 /* --- Making an existing image tileable (common/tileable/) --------------- */
 
 typedef enum
@@ -151,6 +185,9 @@ typedef struct
   int      max_iterations;
   bool     histogram_matching;
   size_t   memory_limit;
+  /* Optional: receives 2 int32 per pixel, the input (x, y) each output
+   * pixel was copied from (the identity where the picture is kept). */
+  int32_t *source_map;
 } TsTileableParams;
 
 /* Fill `params` with the defaults (both directions, default seam width,

@@ -221,8 +221,14 @@ ts_op_class_init_whole_image (GeglOperationClass *operation_class,
                               gboolean (*process) (GeglOperation *, GeglBuffer *, GeglBuffer *,
                                                    const GeglRectangle *, gint))
 {
-  GeglOperationFilterClass *filter_class = GEGL_OPERATION_FILTER_CLASS (operation_class);
+  ts_op_class_init_whole_image_methods (operation_class, get_bounding_box);
+  GEGL_OPERATION_FILTER_CLASS (operation_class)->process = process;
+}
 
+void
+ts_op_class_init_whole_image_methods (GeglOperationClass *operation_class,
+                                      GeglRectangle (*get_bounding_box) (GeglOperation *))
+{
   operation_class->prepare                   = ts_op_prepare;
   operation_class->get_bounding_box          = get_bounding_box;
   operation_class->get_required_for_output   = ts_op_get_required_for_output;
@@ -232,7 +238,6 @@ ts_op_class_init_whole_image (GeglOperationClass *operation_class,
   operation_class->threaded                  = FALSE;
   operation_class->want_in_place             = FALSE;
   operation_class->cache_policy              = GEGL_CACHE_POLICY_ALWAYS;
-  filter_class->process                      = process;
 }
 
 static int

@@ -98,6 +98,10 @@ void ts_op_class_init_whole_image (GeglOperationClass *operation_class,
                                    GeglRectangle (*get_bounding_box) (GeglOperation *),
                                    gboolean (*process) (GeglOperation *, GeglBuffer *, GeglBuffer *,
                                                         const GeglRectangle *, gint));
+/* The same methods but `process`, for an op of another base class (a
+ * composer sets its own). */
+void ts_op_class_init_whole_image_methods (GeglOperationClass *operation_class,
+                                           GeglRectangle (*get_bounding_box) (GeglOperation *));
 
 /* The two patch-size properties as the engine takes them: 0 stays
  * automatic, other values become odd and at least TS_MIN_PATCH_SIZE

@@ -49,3 +49,10 @@ property_int (memory_limit, _("Memory limit (MiB)"), 0)
   value_range (0, G_MAXINT)
   ui_range    (0, 65536)
   ui_meta     ("role", "advanced")
+
+property_boolean (source_map, _("Source map"), FALSE)
+  description (_("Output the layout instead of colours: for each pixel, the "
+                 "absolute coordinates of the input pixel it comes from, in "
+                 "the first two channels of a float image. gegl:map-absolute "
+                 "with sampler-type nearest applies this layout to any map "
+                 "aligned with the input (normal, roughness, height)"))

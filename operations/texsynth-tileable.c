@@ -8,6 +8,7 @@
 #include <glib/gi18n-lib.h>
 
 #include "op-common.h"
+#include "op-source-map.h"
 
 #ifdef GEGL_PROPERTIES
 
@@ -61,6 +62,12 @@ get_bounding_box (GeglOperation *operation)
 }
 
 static void
+prepare (GeglOperation *operation)
+{
+  ts_op_prepare_source_map (operation, GEGL_PROPERTIES (operation)->source_map);
+}
+
+static void
 fill_params (GeglProperties *o, TsTileableParams *params)
 {
   ts_tileable_params_init (params);
@@ -91,6 +98,7 @@ process (GeglOperation       *operation,
   GeglRectangle box = get_bounding_box (operation);
   TsTileableParams params;
   TsImage image, result = { 0, 0, NULL };
+  int32_t *sources = NULL;
   TsError error = { TS_OK, "" };
   TsOpProgress progress;
   TsStatus status;
@@ -108,7 +116,9 @@ process (GeglOperation       *operation,
       result.pixels = g_try_malloc (image.width * image.height * TS_CHANNELS * sizeof (float));
       result.width = image.width;
       result.height = image.height;
-      if (!result.pixels)
+      if (o->source_map)
+        params.source_map = sources = g_try_malloc (image.width * image.height * 2 * sizeof (int32_t));
+      if (!result.pixels || (o->source_map && !sources))
         {
           status = TS_ERROR_OUT_OF_MEMORY;
           g_snprintf (error.message, sizeof error.message,
@@ -125,7 +135,17 @@ process (GeglOperation       *operation,
       ts_op_progress_clear (&progress);
     }
 
-  if (status == TS_OK)
+  if (o->source_map && (status == TS_OK || image.pixels))
+    {
+      /* On failure the identity: the picture left as it was. */
+      if (status != TS_OK)
+        g_warning (_("%s: %s; the image is left unchanged"), gegl_operation_get_name (operation),
+                   error.message[0] ? error.message : ts_status_string (status));
+      if (!ts_op_write_source_map (output, roi, status == TS_OK ? sources : NULL,
+                                   image.width, image.height, box.x, box.y, box.x, box.y))
+        g_warning ("%s: %s", gegl_operation_get_name (operation), _("out of memory"));
+    }
+  else if (status == TS_OK)
     ts_op_write_output (output, roi, &result, box.x, box.y);
   else if (image.pixels)
     {
@@ -141,6 +161,7 @@ process (GeglOperation       *operation,
     ts_op_fail (operation, output, roi, error.message[0] ? error.message
                                         : _("the input is empty: there is nothing to make tileable"));
 
+  g_free (sources);
   g_free (result.pixels);
   g_free (image.pixels);
   return TRUE;
@@ -152,6 +173,7 @@ gegl_op_class_init (GeglOpClass *klass)
   GeglOperationClass       *operation_class = GEGL_OPERATION_CLASS (klass);
 
   ts_op_class_init_whole_image (operation_class, get_bounding_box, process);
+  operation_class->prepare = prepare;
 
   gegl_operation_class_set_keys (operation_class,
     "name",               "texsynth:tileable",

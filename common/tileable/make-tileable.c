@@ -52,6 +52,7 @@ fill_synthesis_params (const TsTileableParams *tp, const TsImage *input, TsParam
   params->max_iterations = tp->max_iterations ? tp->max_iterations : TS_TILEABLE_ITERATIONS;
   params->histogram_matching = tp->histogram_matching;
   params->memory_limit = tp->memory_limit;
+  params->source_map = tp->source_map;
 }
 
 static bool
