@@ -39,30 +39,10 @@ brick = os.path.join(ROOT, "tests", "exemplars", "brick.png")
 granite = os.path.join(ROOT, "tests", "exemplars", "granite1.png")
 
 
-def save(node, path):
-    graph = node.get_parent()
-    out = graph.create_child("gegl:png-save")
-    out.set_property("path", path)
-    node.connect_to("output", out, "input")
-    out.process()
-
-
-def chain(graph, path, *ops):
-    node = graph.create_child("gegl:load")
-    node.set_property("path", path)
-    for op, props in ops:
-        nxt = graph.create_child(op)
-        for key, value in props.items():
-            nxt.set_property(key, value)
-        node.connect_to("output", nxt, "input")
-        node = nxt
-    return node
-
-
 albedo, height = os.path.join(work, "albedo.png"), os.path.join(work, "height.png")
 g = Gegl.Node()
-save(chain(g, granite, ("gegl:crop", {"width": 96.0, "height": 96.0})), albedo)
-save(chain(g, brick, ("gegl:gray", {})), height)
+tsops.save_node(tsops.load_chain(g, granite, ("gegl:crop", {"width": 96.0, "height": 96.0})), albedo)
+tsops.save_node(tsops.load_chain(g, brick, ("gegl:gray", {})), height)
 
 measure = os.path.join(args.build, "tools", "texsynth-measure")
 print("albedo %s (granite1.png, 96x96), height %s (brick.png's grey), %dx%d, seeds %s"
@@ -73,7 +53,7 @@ for weight in args.weights.split(","):
     rows = []
     for seed in (int(s) for s in args.seeds.split(",")):
         graph = Gegl.Node()
-        ex = chain(graph, albedo)
+        ex = tsops.load_chain(graph, albedo)
         synth = graph.create_child("texsynth:synthesize")
         for key, value in (("width", args.side), ("height", args.side), ("seed", seed),
                            ("source-map", True)):
@@ -81,19 +61,12 @@ for weight in args.weights.split(","):
         ex.connect_to("output", synth, "input")
         if weight != "none":
             synth.set_property("feature-weight", float(weight))
-            chain(graph, height).connect_to("output", synth, "aux")
+            tsops.load_chain(graph, height).connect_to("output", synth, "aux")
         outputs = {}
         for name, path in (("height", height), ("albedo", albedo)):
-            mapper = graph.create_child("gegl:map-absolute")
-            mapper.set_property("sampler-type", Gegl.SamplerType.NEAREST)
-            chain(graph, path).connect_to("output", mapper, "input")
-            synth.connect_to("output", mapper, "aux")
-            crop = graph.create_child("gegl:crop")
-            crop.set_property("width", float(args.side))
-            crop.set_property("height", float(args.side))
-            mapper.connect_to("output", crop, "input")
             outputs[name] = os.path.join(work, "%s-w%s-s%d.png" % (name, weight, seed))
-            save(crop, outputs[name])
+            tsops.save_node(tsops.apply_layout(graph, tsops.load_chain(graph, path), synth),
+                            outputs[name])
         h = tsops.run_measure(measure, height, outputs["height"])
         a = tsops.run_measure(measure, albedo, outputs["albedo"])
         rows.append((h["coherence"], h["completeness"], a["coherence"]))

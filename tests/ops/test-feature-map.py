@@ -24,29 +24,11 @@ work = tsops.workdir()
 SIDE = 128
 
 
-def chain(graph, path, *ops):
-    node = graph.create_child("gegl:load")
-    node.set_property("path", path)
-    for op, props in ops:
-        nxt = graph.create_child(op)
-        for key, value in props.items():
-            nxt.set_property(key, value)
-        node.connect_to("output", nxt, "input")
-        node = nxt
-    return node
-
-
-def save(node, path):
-    out = node.get_parent().create_child("gegl:png-save")
-    out.set_property("path", path)
-    node.connect_to("output", out, "input")
-    out.process()
-
-
 albedo, height = os.path.join(work, "albedo.png"), os.path.join(work, "height.png")
 g = Gegl.Node()
-save(chain(g, tsops.exemplar("granite1.png"), ("gegl:crop", {"width": 96.0, "height": 96.0})), albedo)
-save(chain(g, tsops.exemplar("brick.png"), ("gegl:gray", {})), height)
+tsops.save_node(tsops.load_chain(g, tsops.exemplar("granite1.png"),
+                                 ("gegl:crop", {"width": 96.0, "height": 96.0})), albedo)
+tsops.save_node(tsops.load_chain(g, tsops.exemplar("brick.png"), ("gegl:gray", {})), height)
 
 
 def laid_out_height(seed, weight):
@@ -56,20 +38,12 @@ def laid_out_height(seed, weight):
     synth = graph.create_child("texsynth:synthesize")
     for key, value in (("width", SIDE), ("height", SIDE), ("seed", seed), ("source-map", True)):
         synth.set_property(key, value)
-    chain(graph, albedo).connect_to("output", synth, "input")
+    tsops.load_chain(graph, albedo).connect_to("output", synth, "input")
     if weight is not None:
         synth.set_property("feature-weight", weight)
-        chain(graph, height).connect_to("output", synth, "aux")
-    mapper = graph.create_child("gegl:map-absolute")
-    mapper.set_property("sampler-type", Gegl.SamplerType.NEAREST)
-    chain(graph, height).connect_to("output", mapper, "input")
-    synth.connect_to("output", mapper, "aux")
-    crop = graph.create_child("gegl:crop")
-    crop.set_property("width", float(SIDE))
-    crop.set_property("height", float(SIDE))
-    mapper.connect_to("output", crop, "input")
+        tsops.load_chain(graph, height).connect_to("output", synth, "aux")
     path = os.path.join(work, "height-%s-%d.png" % (weight, seed))
-    save(crop, path)
+    tsops.save_node(tsops.apply_layout(graph, tsops.load_chain(graph, height), synth), path)
     return path
 
 

@@ -45,20 +45,6 @@ def op_node(graph, source, op, props):
     return node
 
 
-def laid_out(graph, source, layout):
-    """gegl:map-absolute of `source` through `layout`, cropped to it."""
-    mapper = graph.create_child("gegl:map-absolute")
-    mapper.set_property("sampler-type", Gegl.SamplerType.NEAREST)
-    source.connect_to("output", mapper, "input")
-    layout.connect_to("output", mapper, "aux")
-    box = layout.get_bounding_box()
-    crop = graph.create_child("gegl:crop")
-    for key, value in (("x", box.x), ("y", box.y), ("width", box.width), ("height", box.height)):
-        crop.set_property(key, float(value))
-    mapper.connect_to("output", crop, "input")
-    return crop
-
-
 def floats(node, fmt):
     w, h, data = tsops.render_bytes(node, fmt)
     return w, h, struct.unpack("%df" % (len(data) // 4), data)
@@ -95,11 +81,11 @@ for name, op, props, translate in cases:
 
     # Round trip: the map applied to the exemplar is the colour result.
     cw, ch, expected = tsops.render_bytes(colour, "R'G'B'A u16")
-    rw, rh, got = tsops.render_bytes(laid_out(graph, source, layout), "R'G'B'A u16")
+    rw, rh, got = tsops.render_bytes(tsops.apply_layout(graph, source, layout), "R'G'B'A u16")
     check((cw, ch) == (rw, rh) and expected == got,
           "map-absolute of the exemplar = the colour result, bit for bit in 16-bit R'G'B'A")
     _, _, lab_expected = floats(colour, LAB)
-    _, _, lab_got = floats(laid_out(graph, source, layout), LAB)
+    _, _, lab_got = floats(tsops.apply_layout(graph, source, layout), LAB)
     delta = max_delta_e(lab_expected, lab_got)
     note("      max ΔE76 in float Lab: %.2g (the op reads the exemplar into Lab with its own "
          "fixed arithmetic, map-absolute through babl)" % delta)
@@ -108,7 +94,7 @@ for name, op, props, translate in cases:
     # Alignment: a height map (a pixel-wise function of the colours) laid
     # out by the map is that function of the colour result.
     height = exemplar_node(graph, path, translate, height_map=True)
-    _, _, synthesised_height = floats(laid_out(graph, height, layout), "Y float")
+    _, _, synthesised_height = floats(tsops.apply_layout(graph, height, layout), "Y float")
     grey = graph.create_child("gegl:gray")
     colour.connect_to("output", grey, "input")
     _, _, height_of_result = floats(grey, "Y float")

@@ -192,6 +192,44 @@ def load(path, fmt="R'G'B'A float"):
     return w, h, struct.unpack("%df" % (len(data) // 4), data)
 
 
+def load_chain(graph, path, *ops):
+    """In `graph`: gegl:load of `path`, then each (op, {property: value})
+    in turn; the last node."""
+    node = graph.create_child("gegl:load")
+    node.set_property("path", path)
+    for op, props in ops:
+        nxt = graph.create_child(op)
+        for key, value in props.items():
+            nxt.set_property(key, value)
+        node.connect_to("output", nxt, "input")
+        node = nxt
+    return node
+
+
+def apply_layout(graph, source, layout):
+    """gegl:map-absolute (nearest) of `source` through the source map
+    `layout` (texsynth's source-map=true output), cropped to the layout."""
+    Gegl = gegl()
+    mapper = graph.create_child("gegl:map-absolute")
+    mapper.set_property("sampler-type", Gegl.SamplerType.NEAREST)
+    source.connect_to("output", mapper, "input")
+    layout.connect_to("output", mapper, "aux")
+    box = layout.get_bounding_box()
+    crop = graph.create_child("gegl:crop")
+    for key, value in (("x", box.x), ("y", box.y), ("width", box.width), ("height", box.height)):
+        crop.set_property(key, float(value))
+    mapper.connect_to("output", crop, "input")
+    return crop
+
+
+def save_node(node, path):
+    """Render `node` into the PNG file `path`."""
+    out = node.get_parent().create_child("gegl:png-save")
+    out.set_property("path", path)
+    node.connect_to("output", out, "input")
+    out.process()
+
+
 def save_buffer(buf, path, bitdepth=8):
     Gegl = gegl()
     graph = Gegl.Node()
