@@ -7,10 +7,11 @@
  * share of gradient energy within 10 degrees of the axes, over the
  * exemplar's) and the seam. An image path instead of a kind measures the
  * synthesis from its central SIZE x SIZE crop alone (no truth).
- * Usage: solid-shapes SIZE SEED [-o DIR] [cells|blobs|grains|IMAGE.png]...
+ * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [cells|blobs|grains|IMAGE.png]...
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
  * middle slice across x (blank without truth), and ours across x, y, z
- * and the diagonal.
+ * and the diagonal. -i sets the iterations per level and pass, -p the
+ * large neighbourhood's side (0 = the schedule's).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "slice-figures.h"
@@ -91,13 +92,14 @@ int
 main (int argc, char **argv)
 {
   const char *dir = NULL;
+  int iterations = 0, patch = 0;
   size_t n = argc > 2 ? (size_t) atol (argv[1]) : 0;
   uint32_t seed = argc > 2 ? (uint32_t) strtoul (argv[2], NULL, 10) : 0;
   int status = 0;
 
   if (n < 16 || n > 512)
     {
-      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [cells|blobs|grains|IMAGE.png]...\n");
+      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [cells|blobs|grains|IMAGE.png]...\n");
       return 2;
     }
   ts_io_init ();
@@ -114,6 +116,18 @@ main (int argc, char **argv)
       if (!strcmp (name, "-o") && i + 1 < argc)
         {
           dir = argv[++i];
+          free (ours);
+          continue;
+        }
+      if (!strcmp (name, "-p") && i + 1 < argc)
+        {
+          patch = atoi (argv[++i]);
+          free (ours);
+          continue;
+        }
+      if (!strcmp (name, "-i") && i + 1 < argc)
+        {
+          iterations = atoi (argv[++i]);
           free (ours);
           continue;
         }
@@ -147,6 +161,8 @@ main (int argc, char **argv)
           ts_solid_params_init (&params);
           params.size = n;
           params.seed = seed;
+          params.max_iterations = iterations;
+          params.patch_size = patch;
           start = now ();
           if (ts_synthesize_solid (&params, ex3, ours, NULL, NULL, &error) != TS_OK)
             {
