@@ -1,6 +1,7 @@
 /* Solid texture synthesis from 2D exemplars (Kopf et al. 2007): texture
- * optimization over a cube, coarse to fine, with k-coherence search over
- * MRPM candidate sets in each slice orientation and histogram matching.
+ * optimization over a cube, coarse to fine; in each slice orientation a
+ * search over MRPM k-coherence candidates and over all exemplar
+ * neighbourhoods (exemplar-index.c), and histogram matching.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/pyramid.h"
