@@ -117,3 +117,16 @@ if [ -x "$build/benchmarks/solid-memory" ]; then
     OMP_NUM_THREADS=$(echo "$threads" | awk '{ print $NF }') "$build/benchmarks/solid-memory" "$size" 128
   done
 fi
+
+# Shapes: the slices (x, y, z, diagonal) of volumes synthesised from the
+# ground-truth solids' exemplars beside the truth's own, and granite1's
+# central crop (axis-edges, sharpness, coherence, completeness, seam).
+if [ -x "$build/benchmarks/solid-shapes" ]; then
+  for size in $sizes; do
+    [ "$size" -le 128 ] || continue
+    echo
+    echo "# shapes (build/benchmarks/solid-shapes $size 1 cells blobs grains granite1.png)"
+    OMP_NUM_THREADS=$(echo "$threads" | awk '{ print $NF }') "$build/benchmarks/solid-shapes" "$size" 1 \
+      cells blobs grains "$exemplars/granite1.png"
+  done
+fi

@@ -116,10 +116,10 @@ def run_exemplars():
             row["fresh"], row["fresh_completeness"], row["fresh_2d"] = fresh_reference(exemplar, name)
         rows.append(row)
         print("%-10s 2D %.3f | slices: coherence %.3f (%.2fx) completeness %.3f copy %.3f sharpness %.3f"
-              " seam %.3f (inner lines %.3f) | %.1f s"
+              " axis-edges %.3f seam %.3f (inner lines %.3f) | %.1f s"
               % (name, row["coherence_2d"], row["coherence"], row["coherence"] / row["coherence_2d"],
-                 row["completeness"], row["copy"], row["sharpness"], row["seam"], row["inner_seam"],
-                 row["seconds"]), flush=True)
+                 row["completeness"], row["copy"], row["sharpness"], row["axis_edges"], row["seam"],
+                 row["inner_seam"], row["seconds"]), flush=True)
     if not rows:
         tsops.die("no exemplars in %s" % tsops.exemplars_dir())
     fresh = args.fresh
@@ -166,15 +166,15 @@ def run_truth():
         row.update(measure_volume(args.measure, exemplar, vol_path, outdir, kind))
         rows.append(row)
     print("| solid | 2D coherence | coherence: truth (ratio) / synthesised (ratio) | completeness: truth / "
-          "synthesised | copy | sharpness | seam | seam, inner lines |")
-    print("|---" * 8 + "|")
+          "synthesised | copy | sharpness | axis-edges | seam | seam, inner lines |")
+    print("|---" * 9 + "|")
     for r in rows:
         print("| %s | %.3f | %.3f (%.2f) / %.3f (%.2f) | %.3f / %.3f | %.3f / %.3f | %.3f / %.3f | %.3f / %.3f "
-              "| %.3f / %.3f |"
+              "| %.3f / %.3f | %.3f / %.3f |"
               % (r["name"], r["coherence_2d"], r["truth_coherence"], r["truth_coherence"] / r["coherence_2d"],
                  r["coherence"], r["coherence"] / r["coherence_2d"], r["truth_completeness"], r["completeness"],
-                 r["truth_copy"], r["copy"], r["truth_sharpness"], r["sharpness"], r["truth_seam"], r["seam"],
-                 r["truth_inner_seam"], r["inner_seam"]))
+                 r["truth_copy"], r["copy"], r["truth_sharpness"], r["sharpness"], r["truth_axis_edges"],
+                 r["axis_edges"], r["truth_seam"], r["seam"], r["truth_inner_seam"], r["inner_seam"]))
     print("\nThe ground truth itself against the targets:")
     print_targets(rows, "truth_")
     print("\nThe synthesised volumes against the targets:")

@@ -71,8 +71,8 @@ SEAM_SLICES = 4
 
 def measure_volume(measure, exemplar, vol_path, outdir, name):
     """Figures of the middle slices across x, y and z and the diagonal
-    slice against `exemplar`: medians of coherence, completeness and
-    sharpness, and the largest copy. `seam` is the mean seam figure across
+    slice against `exemplar`: medians of coherence, completeness,
+    sharpness and axis-edges, and the largest copy. `seam` is the mean seam figure across
     the wrap-around edges of SEAM_SLICES slices per axis; `inner_seam` the
     same figure across their middle lines (the slices rolled by half their
     size), which shows what the figure gives where no boundary is."""
@@ -98,6 +98,7 @@ def measure_volume(measure, exemplar, vol_path, outdir, name):
         "completeness": statistics.median(s["completeness"] for s in slices),
         "copy": max(s["copy"] for s in slices),
         "sharpness": statistics.median(s["sharpness"] for s in slices),
+        "axis_edges": statistics.median(s["axis_edges"] for s in slices),
         "seam": statistics.mean(seams),
         "inner_seam": statistics.mean(inner),
     }

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-# Regenerates docs/solid-truth.png: for each ground-truth solid of
+# Regenerates docs/solid-truth.png: for each ground-truth solid (cells,
+# blobs, grains) of
 # build/benchmarks/solid-truth (128^3, seed 1), its z = 0 slice (the
 # exemplar), its middle slice across x, and the middle slice across x of
 # the volume texsynth:volume-slice synthesises from that exemplar. Run from
@@ -26,7 +27,7 @@ SCALE = 1.5
 
 with tempfile.TemporaryDirectory() as scratch:
     panels = []
-    for kind in ("cells", "blobs"):
+    for kind in ("cells", "blobs", "grains"):
         truth = os.path.join(scratch, kind + ".vol")
         subprocess.run([os.path.join(build, "benchmarks", "solid-truth"), kind, str(SIZE), str(SEED), truth],
                        check=True)

@@ -388,11 +388,45 @@ ts_measure_sharpness (const TsImage *exemplar, const TsImage *result, double *sh
 }
 
 TsMeasureStatus
+ts_measure_axis_edge_share (const TsImage *image, double *share)
+{
+  size_t w, h;
+  /* Both gradient components compared to tan(10 deg) of the other. */
+  double tan_limit = tan (TS_AXIS_EDGE_DEGREES * 3.14159265358979323846 / 180.0), axial = 0.0, total = 0.0;
+
+  *share = NAN;
+  if (!big_enough (image))
+    return TS_MEASURE_TOO_SMALL;
+  w = image->width;
+  h = image->height;
+  /* Sobel rather than central differences: its direction error is far
+   * smaller, so an isotropic texture reads as isotropic. */
+  for (size_t y = 1; y + 1 < h; y++)
+    for (size_t x = 1; x + 1 < w; x++)
+      {
+        const float *p = image->pixels + (y * w + x) * TS_CHANNELS;
+        ptrdiff_t row = (ptrdiff_t) (w * TS_CHANNELS);
+        double gx = (p[-row + TS_CHANNELS] + 2.0 * p[TS_CHANNELS] + p[row + TS_CHANNELS])
+                    - (p[-row - TS_CHANNELS] + 2.0 * p[-TS_CHANNELS] + p[row - TS_CHANNELS]);
+        double gy = (p[row - TS_CHANNELS] + 2.0 * p[row] + p[row + TS_CHANNELS])
+                    - (p[-row - TS_CHANNELS] + 2.0 * p[-row] + p[-row + TS_CHANNELS]);
+        double energy = gx * gx + gy * gy, ax = fabs (gx), ay = fabs (gy);
+        total += energy;
+        if (ay <= tan_limit * ax || ax <= tan_limit * ay)
+          axial += energy;
+      }
+  if (total > 0.0)
+    *share = axial / total;
+  return TS_MEASURE_OK;
+}
+
+TsMeasureStatus
 ts_measure_all (const TsImage *exemplar, const TsImage *result, bool wrap_x, bool wrap_y,
                 TsMeasures *out)
 {
   TsMeasureStatus s;
   out->coherence = out->completeness = out->seam = out->copy = out->sharpness = NAN;
+  out->axis_edges = out->axis_edges_exemplar = out->axis_edges_result = NAN;
   s = ts_measure_coherence (exemplar, result, wrap_x, wrap_y, &out->coherence, &out->seam);
   if (s == TS_MEASURE_OK)
     s = ts_measure_completeness (exemplar, result, wrap_x, wrap_y, &out->completeness);
@@ -400,5 +434,11 @@ ts_measure_all (const TsImage *exemplar, const TsImage *result, bool wrap_x, boo
     s = ts_measure_copy (exemplar, result, wrap_x, wrap_y, &out->copy);
   if (s == TS_MEASURE_OK)
     s = ts_measure_sharpness (exemplar, result, &out->sharpness);
+  if (s == TS_MEASURE_OK)
+    s = ts_measure_axis_edge_share (exemplar, &out->axis_edges_exemplar);
+  if (s == TS_MEASURE_OK)
+    s = ts_measure_axis_edge_share (result, &out->axis_edges_result);
+  if (s == TS_MEASURE_OK && out->axis_edges_exemplar > 0.0)
+    out->axis_edges = out->axis_edges_result / out->axis_edges_exemplar;
   return s;
 }

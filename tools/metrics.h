@@ -27,6 +27,12 @@
  * sharpness     mean |grad L| of the result over that of the exemplar,
  *               central differences on pixels with both neighbours inside
  *               the image. 1 = as sharp, < 1 blurrier.
+ * axis edges    the share of an image's gradient energy (Sobel on L,
+ *               |grad|^2) whose direction lies within 10 degrees of the
+ *               image axes, the result's over the exemplar's. An isotropic
+ *               texture has about 0.22 (40 of 180 degrees); axis-aligned
+ *               blocks, seams and dashes push it up. 1 = no more
+ *               axis-aligned than the exemplar.
  */
 #ifndef TS_METRICS_H
 #define TS_METRICS_H
@@ -40,6 +46,7 @@
                                      exact copies (0 / 0) read as seamless */
 #define TS_COPY_RADIUS 2          /* 5x5 windows for copy detection   */
 #define TS_COPY_MAX_RMS 1.0       /* "verbatim": RMS Lab difference below this */
+#define TS_AXIS_EDGE_DEGREES 10.0 /* "axis-aligned": gradient this close to x or y */
 
 typedef enum
 {
@@ -55,6 +62,9 @@ typedef struct
   double seam;        /* NAN unless wrap_x or wrap_y */
   double copy;
   double sharpness;
+  double axis_edges;          /* result's share over the exemplar's */
+  double axis_edges_exemplar; /* the shares themselves               */
+  double axis_edges_result;
 } TsMeasures;
 
 /* Coherence (and seam, if an axis wraps; else NAN). */
@@ -70,6 +80,10 @@ TsMeasureStatus ts_measure_copy (const TsImage *exemplar, const TsImage *result,
 
 TsMeasureStatus ts_measure_sharpness (const TsImage *exemplar, const TsImage *result,
                                       double *sharpness);
+
+/* Share of `image`'s gradient energy within TS_AXIS_EDGE_DEGREES of the
+ * axes (NAN for a flat image). */
+TsMeasureStatus ts_measure_axis_edge_share (const TsImage *image, double *share);
 
 /* All of the above. `wrap_x` / `wrap_y`: the result tiles along that axis
  * (texsynth-measure --tileable). */

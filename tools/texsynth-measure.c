@@ -36,6 +36,10 @@ static const char usage_text[] =
   "                1 Lab RMS at one constant offset) over the exemplar's area;\n"
   "                1 = the exemplar pasted whole, near 0 = synthesised\n"
   "  sharpness     mean |grad L| of RESULT over that of EXEMPLAR; < 1 = blurrier\n"
+  "  axis-edges    share of RESULT's gradient energy (Sobel on L) pointing within\n"
+  "                10 degrees of the image axes, over EXEMPLAR's; > 1 = more\n"
+  "                axis-aligned edges (blocks, seams, dashes) than the exemplar.\n"
+  "                --json also gives both shares (axis_edges_exemplar, _result)\n"
   "\n"
   "Both images must be at least 7x7 pixels. Exit status: 0 on success,\n"
   "2 on bad arguments or images that cannot be read or are too small.\n";
@@ -166,6 +170,12 @@ main (int argc, char **argv)
       print_value ("seam", m.seam, json, &first);
     print_value ("copy", m.copy, json, &first);
     print_value ("sharpness", m.sharpness, json, &first);
+    print_value (json ? "axis_edges" : "axis-edges", m.axis_edges, json, &first);
+    if (json)
+      {
+        print_value ("axis_edges_exemplar", m.axis_edges_exemplar, json, &first);
+        print_value ("axis_edges_result", m.axis_edges_result, json, &first);
+      }
     if (json)
       printf (", \"tileable\": \"%s\", \"exemplar_size\": [%zu, %zu], "
               "\"result_size\": [%zu, %zu]}\n",

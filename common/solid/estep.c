@@ -21,6 +21,14 @@
 #define TS_SOLID_LOCAL_VOTES 384
 /* Squared working-unit distance added per squared unit of excess. */
 #define TS_SOLID_HISTOGRAM_CHOICE 30.0f
+/* Mean-shift steps from the weighted mean towards the mode of the votes,
+ * and the kernel's squared width (working units, Lab for colour). */
+#define TS_SOLID_MODE_STEPS 3
+#define TS_SOLID_MODE_WIDTH2 100.0f
+/* Squared distance from the mode within which the heaviest vote wins:
+ * 10 Lab units (5 gave 128^3 cells axis-edges 1.21 and sharpness 0.60,
+ * 10 gives 1.12 and 0.67). */
+#define TS_SOLID_MODE_CHOICE2 100.0f
 
 typedef struct
 {
@@ -37,17 +45,24 @@ typedef struct
   bool    choosing;
   bool    overflow;
   size_t  count;
-  /* Second pass: the closest vote overall and per orientation. */
+  /* Second pass: the closest vote overall and per orientation, and
+   * among the votes near the mode, the heaviest. */
   float   best_distance;
   int32_t best_source;
   int     best_axis;
   float   axis_distance[TS_SOLID_AXES];
   int32_t axis_source[TS_SOLID_AXES];
+  float   heaviest;
+  int32_t heaviest_source;
+  int     heaviest_axis;
+  float   axis_heaviest[TS_SOLID_AXES];
+  int32_t axis_heaviest_source[TS_SOLID_AXES];
   Vote    list[TS_SOLID_LOCAL_VOTES];
 } Votes;
 
 static void
-choose (Votes *v, const TsSolidView *view, const float *value, int axis, int32_t source)
+choose (Votes *v, const TsSolidView *view, const float *value, int axis, int32_t source,
+        float weight)
 {
   float d = 0.0f;
   for (int c = 0; c < TS_CHANNELS; c++)
@@ -68,6 +83,23 @@ choose (Votes *v, const TsSolidView *view, const float *value, int axis, int32_t
       v->best_source = source;
       v->best_axis = axis;
     }
+  /* Of the votes at the mode, the one from the best-matched neighbourhood:
+   * neighbouring voxels then take the same neighbourhood's pixels, which
+   * keeps the exemplar's fine grain instead of its local average. */
+  if (d < TS_SOLID_MODE_CHOICE2)
+    {
+      if (weight > v->axis_heaviest[axis])
+        {
+          v->axis_heaviest[axis] = weight;
+          v->axis_heaviest_source[axis] = source;
+        }
+      if (weight > v->heaviest)
+        {
+          v->heaviest = weight;
+          v->heaviest_source = source;
+          v->heaviest_axis = axis;
+        }
+    }
 }
 
 static void
@@ -81,7 +113,7 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
     return;
   if (v->choosing)
     {
-      choose (v, view, value, axis, source);
+      choose (v, view, value, axis, source, weight);
       return;
     }
   for (int c = 0; c < TS_CHANNELS; c++)
@@ -143,6 +175,36 @@ collect (Votes *v, const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxis
     }
 }
 
+/* Moves the mean to the nearest mode of the votes (mean shift with a
+ * Cauchy kernel). Where the votes split between two colours, at an
+ * edge, the mean lies between them and the vote nearest it is an
+ * in-between pixel: edges widen and the volume blurs. The mode is one of
+ * the two sides. */
+static void
+seek_mode (Votes *v, const TsSolidLevel *level)
+{
+  for (int step = 0; step < TS_SOLID_MODE_STEPS; step++)
+    {
+      float sum[TS_CHANNELS] = { 0, 0, 0, 0 }, weight = 0.0f;
+      for (size_t i = 0; i < v->count; i++)
+        {
+          const float *value = level->view[v->list[i].axis].exemplar->pixels
+                               + (size_t) v->list[i].source * TS_CHANNELS;
+          float d = 0.0f, k;
+          for (int c = 0; c < TS_CHANNELS; c++)
+            d += (value[c] - v->mean[c]) * (value[c] - v->mean[c]);
+          k = v->list[i].weight / (1.0f + d / TS_SOLID_MODE_WIDTH2);
+          for (int c = 0; c < TS_CHANNELS; c++)
+            sum[c] += k * value[c];
+          weight += k;
+        }
+      if (!(weight > 0.0f))
+        return;
+      for (int c = 0; c < TS_CHANNELS; c++)
+        v->mean[c] = sum[c] / weight;
+    }
+}
+
 /* New value and sources of voxel `p`; false if nothing voted for it. */
 static bool
 vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
@@ -158,14 +220,21 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
     return false;
   for (int c = 0; c < TS_CHANNELS; c++)
     v->mean[c] = v->sum[c] / v->weight;
+  if (!v->overflow)
+    seek_mode (v, level);
   v->choosing = true;
   v->best_distance = (float) INFINITY;
   v->best_source = -1;
   v->best_axis = 0;
+  v->heaviest = 0.0f;
+  v->heaviest_source = -1;
+  v->heaviest_axis = 0;
   for (int a = 0; a < TS_SOLID_AXES; a++)
     {
       v->axis_distance[a] = (float) INFINITY;
       v->axis_source[a] = -1;
+      v->axis_heaviest[a] = 0.0f;
+      v->axis_heaviest_source[a] = -1;
     }
   if (v->overflow)
     collect (v, level, gu, gv, matches, xyz);
@@ -174,8 +243,16 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
       {
         const TsSolidView *view = &level->view[v->list[i].axis];
         choose (v, view, view->exemplar->pixels + (size_t) v->list[i].source * TS_CHANNELS,
-                v->list[i].axis, v->list[i].source);
+                v->list[i].axis, v->list[i].source, v->list[i].weight);
       }
+  if (v->heaviest_source >= 0)
+    {
+      v->best_source = v->heaviest_source;
+      v->best_axis = v->heaviest_axis;
+    }
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    if (v->axis_heaviest_source[a] >= 0)
+      v->axis_source[a] = v->axis_heaviest_source[a];
   return v->best_source >= 0;
 }
 

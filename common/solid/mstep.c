@@ -11,6 +11,8 @@
 
 /* Kwatra et al.'s robust energy exponent, as in 2D. */
 #define TS_ENERGY_EXPONENT 0.8f
+/* Leaves of the exemplar index a query visits. */
+#define TS_SOLID_INDEX_LEAVES 6
 
 typedef struct
 {
@@ -63,6 +65,19 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
                              source[base + u * p->stride_u + v * p->stride_v], du, dv);
         }
     }
+  if (view->index && view->index->patch == pass->patch)
+    {
+      /* Any exemplar neighbourhood, not only those coherent with this
+       * slice's sources: the slices across other axes then reshape what
+       * this one would otherwise extrude. */
+      float projected[TS_SOLID_INDEX_DIMS];
+      int32_t found[TS_SOLID_INDEX_RESULTS];
+      size_t w = view->exemplar->width;
+      ts_solid_index_project (view->index, s->neighbourhood, projected);
+      ts_solid_index_query (view->index, projected, TS_SOLID_INDEX_LEAVES, found);
+      for (size_t k = 0; k < TS_SOLID_INDEX_RESULTS && found[k] >= 0; k++)
+        ts_search_consider (s, (ptrdiff_t) ((size_t) found[k] % w), (ptrdiff_t) ((size_t) found[k] / w));
+    }
   if (s->best_centre < 0)
     {
       /* Only transparent sources around: a random opaque pixel. */
@@ -74,8 +89,8 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
 
 TsStatus
 ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const TsAxisGrid *gv,
-                const TsPass *pass, size_t k_use, uint32_t seed_stream, TsSolidMatch *matches,
-                TsCancel *cancel)
+                const TsPass *pass, size_t k_use, size_t t_offset, uint32_t seed_stream,
+                TsSolidMatch *matches, TsCancel *cancel)
 {
   const TsImage *ex = level->view[axis].exemplar;
   size_t n = level->n, cu = gu->centres, cv = gv->centres;
@@ -123,6 +138,12 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
             ju = (size_t) i % cu;
             jv = ((size_t) i / cu) % cv;
             t = (size_t) i / cu / cv;
+          }
+        if (t % TS_SOLID_SLICE_SPACING != t_offset % TS_SOLID_SLICE_SPACING)
+          {
+            matches[i].centre = -1;
+            matches[i].weight = 0.0f;
+            continue;
           }
         ptrdiff_t pu = ts_axis_grid_centre (gu, ju), pv = ts_axis_grid_centre (gv, jv);
 

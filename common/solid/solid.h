@@ -5,6 +5,7 @@
 #define TS_SOLID_H
 
 #include "engine/level.h"
+#include "exemplar-index.h"
 
 #define TS_SOLID_AXES 3
 /* Kopf et al. 2007 use 16 bins per channel. */
@@ -24,6 +25,7 @@ typedef struct
   const int32_t        *opaque;      /* indices of pixels with alpha > 0    */
   size_t                opaque_count;
   float                *excess;      /* histogram excess per exemplar pixel, or NULL */
+  const TsSolidIndex   *index;       /* all neighbourhoods of the pass's size, or NULL */
 } TsSolidView;
 
 typedef struct
@@ -67,12 +69,22 @@ ts_solid_match_index (int axis, size_t n, size_t cu, size_t cv, size_t t, size_t
   return axis == 0 ? (jv * cu + ju) * n + t : (t * cv + jv) * cu + ju;
 }
 
+/* Slices along its own axis that an orientation searches in one
+ * iteration: every TS_SOLID_SLICE_SPACING-th. With every slice searched,
+ * neighbouring slices find the same exemplar pieces and the volume
+ * extrudes them; on a sparse grid in all three directions the voxels
+ * between are shaped by the other orientations (Kopf et al. 2007). */
+#define TS_SOLID_SLICE_SPACING 2
+
 /* M-step of one orientation: the best exemplar neighbourhood for the
- * slice neighbourhood of every centre (every slice, sparse grid gu x gv
- * within it). `matches` has n * gu->centres * gv->centres entries. */
+ * slice neighbourhood of every centre (the slices t = t_offset modulo
+ * TS_SOLID_SLICE_SPACING, sparse grid gu x gv within them), among the
+ * k-coherence candidates and, with the view's index, the nearest of all
+ * exemplar neighbourhoods. `matches` has n * gu->centres * gv->centres
+ * entries; those of other slices get centre -1. */
 TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu,
                          const TsAxisGrid *gv, const TsPass *pass, size_t k_use,
-                         uint32_t seed_stream, TsSolidMatch *matches,
+                         size_t t_offset, uint32_t seed_stream, TsSolidMatch *matches,
                          TsCancel *cancel);
 
 /* --- histogram matching --------------------------------------------------- */

@@ -1,6 +1,7 @@
 /* Solid texture synthesis from 2D exemplars (Kopf et al. 2007): texture
- * optimization over a cube, coarse to fine, with k-coherence search over
- * MRPM candidate sets in each slice orientation and histogram matching.
+ * optimization over a cube, coarse to fine; in each slice orientation a
+ * search over MRPM k-coherence candidates and over all exemplar
+ * neighbourhoods (exemplar-index.c), and histogram matching.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/pyramid.h"
@@ -28,6 +29,7 @@ typedef struct
   int32_t        *opaque;
   size_t          opaque_count;
   float          *excess;
+  TsSolidIndex    index;      /* all neighbourhoods of the current pass */
 } Exemplar;
 
 typedef struct
@@ -146,6 +148,7 @@ run_free (Run *run)
       ts_candidate_set_free (&ex->coarser_candidates);
       free (ex->opaque);
       free (ex->excess);
+      ts_solid_index_free (&ex->index);
     }
 }
 
@@ -437,9 +440,11 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
     {
       if (!l->source[a])
         continue;
+      /* Each orientation its own slices of the sparse grid. */
+      size_t t_offset = (stream >> (16 + a)) % TS_SOLID_SLICE_SPACING;
       it.matches[a] = malloc (n * it.gu.centres * it.gv.centres * sizeof (TsSolidMatch));
-      status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, stream + (uint32_t) a,
-                                               it.matches[a], &run->midway)
+      status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, t_offset,
+                                               stream + (uint32_t) a, it.matches[a], &run->midway)
                              : TS_ERROR_OUT_OF_MEMORY;
       if (status == TS_OK && !report (run, share, "optimizing volume"))
         status = TS_ERROR_CANCELLED;
@@ -462,6 +467,26 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
   return status;
 }
 
+/* Every exemplar's index of all neighbourhoods of `patch` at `level`,
+ * and the views that search it. */
+static TsStatus
+index_exemplars (Run *run, size_t level, size_t patch)
+{
+  for (size_t e = 0; e < run->exemplars; e++)
+    {
+      Exemplar *ex = &run->exemplar[e];
+      TsStatus status;
+      ts_solid_index_free (&ex->index);
+      status = ts_solid_index_build (&ex->pyramid, level, patch, &ex->index);
+      if (status != TS_OK)
+        return status;
+    }
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    run->level.view[a].index = run->exemplar_of[a] < 0 || run->exemplar[run->exemplar_of[a]].index.patch == 0
+                               ? NULL : &run->exemplar[run->exemplar_of[a]].index;
+  return TS_OK;
+}
+
 static TsStatus
 optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
 {
@@ -476,6 +501,7 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
     {
       const TsPass *pass = &plan->pass[pi];
       size_t it;
+      status = index_exemplars (run, level, pass->patch);
       for (it = 0; it < pass->max_iterations && status == TS_OK; it++)
         {
           uint32_t stream = (uint32_t) ts_random (run->params->seed, (uint32_t) level,

@@ -73,7 +73,7 @@ def main():
     first = ex[names[0]]
     code, out, err = run(first, first)
     keys = [line.split(":")[0] for line in out.splitlines()]
-    check(code == 0 and keys == ["coherence", "completeness", "copy", "sharpness"],
+    check(code == 0 and keys == ["coherence", "completeness", "copy", "sharpness", "axis-edges"],
           "text output: %r" % out)
     code, out, err = run("--tileable", first, first)
     keys = [line.split(":")[0] for line in out.splitlines()]

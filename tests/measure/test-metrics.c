@@ -351,6 +351,61 @@ test_sharpness_and_errors (void)
   free (flat.pixels);
 }
 
+/* Stripes whose edges run at `degrees`, smoothly shaded so the gradient
+ * is well defined, and concentric rings (every direction alike). */
+static TsImage
+make_stripes (size_t side, double degrees, bool rings)
+{
+  TsImage im = new_image (side, side);
+  double a = degrees * 3.14159265358979323846 / 180.0;
+  for (size_t y = 0; y < side; y++)
+    for (size_t x = 0; x < side; x++)
+      {
+        double dx = (double) x - 0.5 * (double) side, dy = (double) y - 0.5 * (double) side;
+        double t = rings ? sqrt (dx * dx + dy * dy) : dx * cos (a) + dy * sin (a);
+        float *p = px (&im, x, y);
+        /* Rings end inside the inscribed circle: the square's corners
+         * would add diagonal edges. */
+        double pi = 3.14159265358979323846, last = floor ((0.5 * (double) side - 2.0) * 0.3 / pi) * pi / 0.3;
+        if (rings && t > last)
+          t = last;
+        p[0] = (float) (50.0 + 40.0 * sin (t * 0.3));
+        p[3] = 1.0f;
+      }
+  return im;
+}
+
+static void
+test_axis_edges (void)
+{
+  TsImage axial = make_stripes (64, 0.0, false), diagonal = make_stripes (64, 45.0, false);
+  TsImage tilted = make_stripes (64, 25.0, false), rings = make_stripes (96, 0.0, true);
+  TsImage flat = new_image (10, 10);
+  TsMeasures m;
+  double share;
+
+  CHECK (ts_measure_axis_edge_share (&axial, &share) == TS_MEASURE_OK && share > 0.99,
+         "axis-aligned stripes: share %g, want 1", share);
+  CHECK (ts_measure_axis_edge_share (&diagonal, &share) == TS_MEASURE_OK && share < 0.01,
+         "45-degree stripes: share %g, want 0", share);
+  CHECK (ts_measure_axis_edge_share (&tilted, &share) == TS_MEASURE_OK && share < 0.01,
+         "25-degree stripes: share %g, want 0", share);
+  /* Isotropic: 40 of 180 degrees. */
+  CHECK (ts_measure_axis_edge_share (&rings, &share) == TS_MEASURE_OK && fabs (share - 0.222) < 0.03,
+         "rings: share %g, want about 0.222", share);
+  CHECK (ts_measure_axis_edge_share (&flat, &share) == TS_MEASURE_OK && isnan (share),
+         "flat: share %g, want NaN", share);
+  CHECK (ts_measure_all (&rings, &axial, false, false, &m) == TS_MEASURE_OK && m.axis_edges > 3.5,
+         "stripes against rings: ratio %g", m.axis_edges);
+  CHECK (ts_measure_all (&rings, &rings, false, false, &m) == TS_MEASURE_OK && m.axis_edges == 1.0,
+         "self: ratio %g", m.axis_edges);
+  free (axial.pixels);
+  free (diagonal.pixels);
+  free (tilted.pixels);
+  free (rings.pixels);
+  free (flat.pixels);
+}
+
 int
 main (void)
 {
@@ -382,6 +437,7 @@ main (void)
   test_measures_vs_brute (&smooth, &res);
   test_copy ();
   test_sharpness_and_errors ();
+  test_axis_edges ();
 
 #ifdef _OPENMP
   /* Same figures with any number of threads. */

@@ -174,6 +174,15 @@ test_determinism (void)
 #endif
   CHECK (run (all, &p, &b, NULL) == TS_OK, "synthesis");
   CHECK (memcmp (a, b, n * n * n * 16) == 0, "1 and 2 threads give identical volumes");
+#ifdef _OPENMP
+  omp_set_num_threads (4);
+#endif
+  free (b);
+  CHECK (run (all, &p, &b, NULL) == TS_OK, "synthesis");
+  CHECK (memcmp (a, b, n * n * n * 16) == 0, "1 and 4 threads give identical volumes");
+#ifdef _OPENMP
+  omp_set_num_threads (2);
+#endif
   p.seed = 6;
   CHECK (run (all, &p, &c, NULL) == TS_OK, "synthesis");
   CHECK (memcmp (a, c, n * n * n * 16) != 0, "another seed gives another volume");

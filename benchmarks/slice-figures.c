@@ -1,0 +1,127 @@
+/* SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "slice-figures.h"
+#include "metrics.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double
+linear (double c)
+{
+  c /= 255.0;
+  return c <= 0.04045 ? c / 12.92 : pow ((c + 0.055) / 1.055, 2.4);
+}
+
+static double
+lab_f (double t)
+{
+  return t > 216.0 / 24389.0 ? cbrt (t) : (24389.0 / 27.0 * t + 16.0) / 116.0;
+}
+
+void
+slice_rgb8_to_lab (const uint8_t *rgb, size_t count, float *lab)
+{
+  for (size_t i = 0; i < count; i++)
+    {
+      double r = linear (rgb[3 * i]), g = linear (rgb[3 * i + 1]), b = linear (rgb[3 * i + 2]);
+      double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+      double y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+      double z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+      double fx = lab_f (x), fy = lab_f (y), fz = lab_f (z);
+      lab[4 * i] = (float) (116.0 * fy - 16.0);
+      lab[4 * i + 1] = (float) (500.0 * (fx - fy));
+      lab[4 * i + 2] = (float) (200.0 * (fy - fz));
+      lab[4 * i + 3] = 1.0f;
+    }
+}
+
+void
+slice_cut (const float *volume, size_t n, int axis, size_t index, TsImage *out)
+{
+  for (size_t v = 0; v < n; v++)
+    for (size_t u = 0; u < n; u++)
+      {
+        float *o = out->pixels + (v * n + u) * TS_CHANNELS;
+        if (axis < 3)
+          {
+            size_t x = axis == 0 ? index : u, y = axis == 1 ? index : (axis == 0 ? u : v);
+            size_t z = axis == 2 ? index : v;
+            memcpy (o, volume + ((z * n + y) * n + x) * TS_CHANNELS, TS_CHANNELS * sizeof (float));
+            continue;
+          }
+        double s = (double) u / sqrt (2.0), f = floor (s), t = s - f;
+        double w[4] = { (1 - t) * (1 - t), t * (1 - t), (1 - t) * t, t * t };
+        for (int c = 0; c < TS_CHANNELS; c++)
+          o[c] = 0.0f;
+        for (int k = 0; k < 4; k++)
+          {
+            size_t x = ((size_t) f + (size_t) (k & 1)) % n, z = ((size_t) f + (size_t) (k >> 1)) % n;
+            const float *p = volume + ((z * n + v) * n + x) * TS_CHANNELS;
+            for (int c = 0; c < TS_CHANNELS; c++)
+              o[c] += (float) (w[k] * p[c]);
+          }
+      }
+}
+
+static double
+median4 (const double a[SLICE_KINDS])
+{
+  double s[SLICE_KINDS];
+  memcpy (s, a, sizeof s);
+  for (int i = 0; i < SLICE_KINDS; i++)
+    for (int j = i + 1; j < SLICE_KINDS; j++)
+      if (s[j] < s[i])
+        {
+          double t = s[i];
+          s[i] = s[j];
+          s[j] = t;
+        }
+  return 0.5 * (s[1] + s[2]);
+}
+
+bool
+slice_figures (const TsImage *exemplar, const float *volume, size_t n, SliceFigures *out)
+{
+  TsImage slice = { n, n, malloc (n * n * TS_CHANNELS * sizeof (float)) };
+  double seams = 0.0;
+
+  if (!slice.pixels)
+    return false;
+  out->worst_axis_edges = 0.0;
+  for (int kind = 0; kind < SLICE_KINDS; kind++)
+    {
+      TsMeasures m;
+      bool wrap = kind < 3; /* the diagonal plane does not tile at unit spacing */
+      slice_cut (volume, n, kind, n / 2, &slice);
+      if (ts_measure_all (exemplar, &slice, wrap, wrap, &m) != TS_MEASURE_OK)
+        {
+          free (slice.pixels);
+          return false;
+        }
+      out->coherence[kind] = m.coherence;
+      out->completeness[kind] = m.completeness;
+      out->sharpness[kind] = m.sharpness;
+      out->axis_edges[kind] = m.axis_edges;
+      out->worst_axis_edges = fmax (out->worst_axis_edges, m.axis_edges);
+    }
+  for (int axis = 0; axis < 3; axis++)
+    for (size_t k = 0; k < SLICE_SEAM_SLICES; k++)
+      {
+        double coherence, seam;
+        slice_cut (volume, n, axis, (2 * k + 1) * n / (2 * SLICE_SEAM_SLICES), &slice);
+        if (ts_measure_coherence (exemplar, &slice, true, true, &coherence, &seam) != TS_MEASURE_OK)
+          {
+            free (slice.pixels);
+            return false;
+          }
+        seams += seam;
+      }
+  out->seam = seams / (3.0 * SLICE_SEAM_SLICES);
+  out->median_coherence = median4 (out->coherence);
+  out->median_completeness = median4 (out->completeness);
+  out->median_sharpness = median4 (out->sharpness);
+  out->median_axis_edges = median4 (out->axis_edges);
+  free (slice.pixels);
+  return true;
+}

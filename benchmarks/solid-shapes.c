@@ -1,0 +1,207 @@
+/* solid-shapes: how alike in kind a synthesised solid's slices are to its
+ * exemplar, beside the ground truth. For each ground-truth solid
+ * (truth-solids.c) the truth's z = 0 slice is the exemplar; a volume of the
+ * same size is synthesised from it, and both volumes' middle slices across
+ * x, y, z and the diagonal x = z are measured against the exemplar
+ * (slice-figures.c): coherence, completeness, sharpness, axis-edges (the
+ * share of gradient energy within 10 degrees of the axes, over the
+ * exemplar's) and the seam. An image path instead of a kind measures the
+ * synthesis from its central SIZE x SIZE crop alone (no truth).
+ * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [cells|blobs|grains|IMAGE.png]...
+ * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
+ * middle slice across x (blank without truth), and ours across x, y, z
+ * and the diagonal. -i sets the iterations per level and pass, -p the
+ * large neighbourhood's side (0 = the schedule's).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "image-io.h"
+#include "slice-figures.h"
+#include "truth-solids.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double
+now (void)
+{
+  struct timespec t;
+  clock_gettime (CLOCK_MONOTONIC, &t);
+  return (double) t.tv_sec + (double) t.tv_nsec * 1e-9;
+}
+
+static void
+print_row (const char *name, const char *what, const SliceFigures *f)
+{
+  printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
+          "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f\n",
+          name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
+          f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
+          f->axis_edges[3], f->worst_axis_edges, f->seam);
+}
+
+static void
+save (const char *dir, const char *name, const char *what, const TsImage *image)
+{
+  char path[4096], why[256];
+  if (!dir)
+    return;
+  snprintf (path, sizeof path, "%s/%s-%s.png", dir, name, what);
+  if (!ts_io_save (path, image, why, sizeof why))
+    fprintf (stderr, "solid-shapes: %s\n", why);
+}
+
+/* Copies `part` into column `column` of `strip` (panels n wide, a gap of
+ * 4 pixels between them). */
+static void
+place (TsImage *strip, size_t column, const TsImage *part)
+{
+  size_t n = part->width;
+  if (!strip->pixels)
+    return;
+  for (size_t y = 0; y < n; y++)
+    memcpy (strip->pixels + (y * strip->width + column * (n + 4)) * TS_CHANNELS,
+            part->pixels + y * n * TS_CHANNELS, n * TS_CHANNELS * sizeof (float));
+}
+
+/* The central n x n crop of an image file as the exemplar. */
+static bool
+load_crop (const char *path, size_t n, TsImage *out)
+{
+  TsImage whole;
+  char why[256];
+  if (!ts_io_load (path, &whole, why, sizeof why))
+    {
+      fprintf (stderr, "solid-shapes: %s\n", why);
+      return false;
+    }
+  n = n < whole.width ? n : whole.width;
+  n = n < whole.height ? n : whole.height;
+  out->width = out->height = n;
+  out->pixels = malloc (n * n * TS_CHANNELS * sizeof (float));
+  if (out->pixels)
+    for (size_t y = 0; y < n; y++)
+      memcpy (out->pixels + y * n * TS_CHANNELS,
+              whole.pixels + (((whole.height - n) / 2 + y) * whole.width + (whole.width - n) / 2) * TS_CHANNELS,
+              n * TS_CHANNELS * sizeof (float));
+  free (whole.pixels);
+  return out->pixels != NULL;
+}
+
+int
+main (int argc, char **argv)
+{
+  const char *dir = NULL;
+  int iterations = 0, patch = 0;
+  size_t n = argc > 2 ? (size_t) atol (argv[1]) : 0;
+  uint32_t seed = argc > 2 ? (uint32_t) strtoul (argv[2], NULL, 10) : 0;
+  int status = 0;
+
+  if (n < 16 || n > 512)
+    {
+      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [cells|blobs|grains|IMAGE.png]...\n");
+      return 2;
+    }
+  ts_io_init ();
+  for (int i = 3; i < argc; i++)
+    {
+      const char *name = argv[i];
+      TsImage exemplar = { n, n, NULL }, slice = { n, n, NULL };
+      float *truth = NULL, *ours = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+      SliceFigures f;
+      TsSolidParams params;
+      TsError error;
+      double start;
+
+      if (!strcmp (name, "-o") && i + 1 < argc)
+        {
+          dir = argv[++i];
+          free (ours);
+          continue;
+        }
+      if (!strcmp (name, "-p") && i + 1 < argc)
+        {
+          patch = atoi (argv[++i]);
+          free (ours);
+          continue;
+        }
+      if (!strcmp (name, "-i") && i + 1 < argc)
+        {
+          iterations = atoi (argv[++i]);
+          free (ours);
+          continue;
+        }
+      slice.pixels = malloc (n * n * TS_CHANNELS * sizeof (float));
+      if (strstr (name, ".png") ? !load_crop (name, n, &exemplar) : false)
+        status = 1;
+      else if (!strstr (name, ".png"))
+        {
+          uint8_t *rgb = malloc (n * n * n * 3);
+          truth = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+          exemplar.pixels = malloc (n * n * TS_CHANNELS * sizeof (float));
+          if (!rgb || !truth || !exemplar.pixels || !truth_solid_render (name, n, seed, rgb))
+            {
+              fprintf (stderr, "solid-shapes: unknown solid '%s' or out of memory\n", name);
+              free (rgb);
+              free (truth);
+              truth = NULL;
+              status = 1;
+            }
+          else
+            {
+              slice_rgb8_to_lab (rgb, n * n * n, truth);
+              memcpy (exemplar.pixels, truth, n * n * TS_CHANNELS * sizeof (float));
+              free (rgb);
+            }
+        }
+      if (status == 0 && ours && slice.pixels && exemplar.pixels)
+        {
+          const TsImage *ex3[3] = { &exemplar, &exemplar, &exemplar };
+          const char *base = strrchr (name, '/') ? strrchr (name, '/') + 1 : name;
+          ts_solid_params_init (&params);
+          params.size = n;
+          params.seed = seed;
+          params.max_iterations = iterations;
+          params.patch_size = patch;
+          start = now ();
+          if (ts_synthesize_solid (&params, ex3, ours, NULL, NULL, &error) != TS_OK)
+            {
+              fprintf (stderr, "solid-shapes: %s\n", error.message);
+              status = 1;
+            }
+          else
+            {
+              printf ("%-9s %zu^3 synthesised in %.2f s\n", base, n, now () - start);
+              /* exemplar | truth across x | ours across x, y, z, diagonal */
+              TsImage strip = { 6 * (n + 4) - 4, n, NULL };
+              if (dir)
+                strip.pixels = calloc (strip.width * n * TS_CHANNELS, sizeof (float));
+              for (size_t p = 0; strip.pixels && p < strip.width * n; p++)
+                strip.pixels[p * TS_CHANNELS + 3] = 1.0f;
+              place (&strip, 0, &exemplar);
+              if (truth && slice_figures (&exemplar, truth, n, &f))
+                {
+                  print_row (base, "truth", &f);
+                  slice_cut (truth, n, 0, n / 2, &slice);
+                  place (&strip, 1, &slice);
+                }
+              if (slice_figures (&exemplar, ours, n, &f))
+                print_row (base, "ours", &f);
+              for (int a = 0; a < 4; a++)
+                {
+                  slice_cut (ours, n, a, n / 2, &slice);
+                  place (&strip, 2 + (size_t) a, &slice);
+                }
+              if (strip.pixels)
+                save (dir, base, "slices", &strip);
+              free (strip.pixels);
+              fflush (stdout);
+            }
+        }
+      free (exemplar.pixels);
+      free (slice.pixels);
+      free (truth);
+      free (ours);
+    }
+  return status;
+}

