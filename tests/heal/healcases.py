@@ -1,0 +1,52 @@
+# The heal cases: masks (a centred square, a smooth blob, the photos'
+# object outlines) written as 8-bit grey PNGs with the standard library.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+import math
+import struct
+import zlib
+
+
+def write_grey_png(path, width, height, values):
+    """values: a function (x, y) -> 0..255."""
+    raw = bytearray()
+    for y in range(height):
+        raw.append(0)
+        raw.extend(values(x, y) for x in range(width))
+
+    def chunk(kind, data):
+        body = kind + data
+        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xffffffff)
+
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n")
+        f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)))
+        f.write(chunk(b"IDAT", zlib.compress(bytes(raw), 9)))
+        f.write(chunk(b"IEND", b""))
+
+
+def square(width, height, side, cx=None, cy=None):
+    """(x, y) -> 255 inside a side x side square centred at (cx, cy)."""
+    cx = width // 2 if cx is None else cx
+    cy = height // 2 if cy is None else cy
+    x0, y0 = cx - side // 2, cy - side // 2
+    return lambda x, y: 255 if x0 <= x < x0 + side and y0 <= y < y0 + side else 0
+
+
+def blob(width, height, area=1600, cx=None, cy=None):
+    """(x, y) -> 255 inside a smooth closed curve of about `area` pixels:
+    a circle whose radius wobbles with two harmonics."""
+    cx = width / 2.0 if cx is None else cx
+    cy = height / 2.0 if cy is None else cy
+    # Mean of r^2 over the angle: r0^2 (1 + (0.25^2 + 0.15^2) / 2).
+    r0 = math.sqrt(area / math.pi / (1 + (0.25 ** 2 + 0.15 ** 2) / 2))
+
+    def inside(x, y):
+        dx, dy = x + 0.5 - cx, y + 0.5 - cy
+        t = math.atan2(dy, dx)
+        r = r0 * (1 + 0.25 * math.sin(2 * t + 0.7) + 0.15 * math.cos(3 * t))
+        return 255 if dx * dx + dy * dy <= r * r else 0
+    return inside
+
+
+def count(width, height, values):
+    return sum(1 for y in range(height) for x in range(width) if values(x, y))
