@@ -287,10 +287,12 @@ void     ts_heal_region (const TsHealParams *params, size_t width, size_t height
 
 /* Fills the hole of `image` into `output` (allocated by the caller with
  * the image's size); pixels outside the hole are copied unchanged. Every
- * hole pixel becomes a copy of one source pixel; `source_map` (may be NULL)
- * receives for every pixel the index y * width + x of that source pixel
- * (in `source` if given, else in `image`), or -1 outside the hole. On
- * failure `output` is left untouched. */
+ * hole pixel becomes a copy of one source pixel, and within a few pixels
+ * of the hole's outline its L, a, b are shifted by a smooth correction
+ * that hides the outline; `source_map` (may be NULL) receives for every
+ * pixel the index y * width + x of that source pixel (in `source` if
+ * given, else in `image`), or -1 outside the hole. On failure `output` is
+ * left untouched. */
 TsStatus ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
                   const TsImage *source, TsImage *output, int32_t *source_map,
                   TsProgressFunc progress, void *user_data, TsError *error);

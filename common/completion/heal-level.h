@@ -13,6 +13,8 @@
  * brick courses and mortar lines over at every level of the bundled
  * cases, and is the window the measures use. */
 #define TS_HEAL_DEFAULT_PATCH 7
+/* Wexler et al. 2007's confidence decay per pixel into the hole. */
+#define TS_HEAL_CONFIDENCE_BASE 1.3f
 
 static inline size_t
 ts_heal_coarse_radius (const TsHealParams *params)
@@ -55,6 +57,7 @@ typedef struct
   int32_t  *active_index;    /* per target pixel: index in `active` or -1   */
   int32_t  *nnf;             /* per active centre: matched source centre    */
   float    *dist;            /* its patch distance                          */
+  float    *confidence;      /* its vote's weight for lying near known pixels */
   size_t    hole_pixels;
 } TsHealLevel;
 
@@ -81,6 +84,10 @@ TsStatus ts_heal_level_downsample (const TsHealLevel *fine, TsHealLevel *coarse)
 
 /* Valid source centres for `area` and the active target centres. */
 TsStatus ts_heal_level_index (TsHealLevel *level, const TsHealArea *area);
+
+/* Chebyshev distance of every pixel to the nearest known one (0 for
+ * known pixels), w * h entries to free(); NULL if out of memory. */
+uint32_t *ts_heal_distance_to_known (const TsHealLevel *level);
 
 /* Chebyshev distance from the farthest hole pixel to a known one. */
 size_t   ts_heal_hole_depth (const TsHealLevel *level);
@@ -122,5 +129,13 @@ TsStatus ts_heal_search_pass (TsHealLevel *level, uint32_t seed, uint32_t level_
  * proposal closest to that mean, whose source index goes to `picked`.
  * Returns the number of hole pixels that changed noticeably. */
 size_t   ts_heal_vote (TsHealLevel *level, bool pick, int32_t *picked, TsCancel *cancel);
+
+/* Colour offsets (L, a, b per pixel of the level, 3 floats) that hide the
+ * outline: where a copied pixel meets a known one, the known pixel minus
+ * what lay beside the copy's source is spread smoothly over a band of the
+ * hole along its outline, fading to 0 inside. Texture (gradients) stays
+ * the source's; only the slow colour mismatch is corrected. */
+TsStatus ts_heal_outline_offsets (const TsHealLevel *level, const int32_t *picked,
+                                  float *offset);
 
 #endif

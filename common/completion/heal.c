@@ -177,7 +177,8 @@ run_levels (const TsHealParams *params, Run *run, TsHealLevel *levels, size_t co
 /* Output: the image, and in the hole the picked source pixels as given. */
 static void
 write_result (const TsImage *image, const TsImage *source, const TsHealLevel *finest,
-              const TsHealCrop *crop, const int32_t *picked, TsImage *output, int32_t *source_map)
+              const TsHealCrop *crop, const int32_t *picked, const float *offset,
+              TsImage *output, int32_t *source_map)
 {
   size_t w = image->width, n = w * image->height, cw = finest->width;
 
@@ -196,6 +197,8 @@ write_result (const TsImage *image, const TsImage *source, const TsHealLevel *fi
           s = (s / cw + crop->y0) * w + s % cw + crop->x0;
         memcpy (output->pixels + q * TS_CHANNELS, (source ? source : image)->pixels + s * TS_CHANNELS,
                 TS_CHANNELS * sizeof (float));
+        for (int c = 0; c < 3; c++)
+          output->pixels[q * TS_CHANNELS + c] += offset[p * 3 + c];
         if (source_map)
           source_map[q] = (int32_t) s;
       }
@@ -211,6 +214,7 @@ ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
   TsHealArea area;
   TsHealCrop crop;
   int32_t *picked = NULL;
+  float *offset = NULL;
   size_t count = 0;
   TsStatus status = ts_heal_params_validate (params, image, hole, source, error);
 
@@ -227,7 +231,7 @@ ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
   if (status == TS_OK && crop.empty)
     {
       /* Nothing to fill: the image as it is. */
-      write_result (image, source, &levels[0], &crop, NULL, output, source_map);
+      write_result (image, source, &levels[0], &crop, NULL, NULL, output, source_map);
       ts_heal_level_free (&levels[0]);
       return TS_OK;
     }
@@ -244,12 +248,18 @@ ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
     }
   if (status == TS_OK)
     {
-      write_result (image, source, &levels[0], &crop, picked, output, source_map);
+      offset = malloc (levels[0].width * levels[0].height * 3 * sizeof (float));
+      status = offset ? ts_heal_outline_offsets (&levels[0], picked, offset) : TS_ERROR_OUT_OF_MEMORY;
+    }
+  if (status == TS_OK)
+    {
+      write_result (image, source, &levels[0], &crop, picked, offset, output, source_map);
       report (&run, 0.0, "done");
     }
   for (size_t l = 0; l < TS_HEAL_MAX_LEVELS; l++)
     ts_heal_level_free (&levels[l]);
   free (picked);
+  free (offset);
   if (status != TS_OK)
     return ts_fail (error, status, "%s", ts_status_string (status));
   return TS_OK;

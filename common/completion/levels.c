@@ -4,6 +4,7 @@
 #include "heal-level.h"
 #include "engine/image.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -20,6 +21,7 @@ ts_heal_level_free (TsHealLevel *level)
   free (level->active_index);
   free (level->nnf);
   free (level->dist);
+  free (level->confidence);
   memset (level, 0, sizeof *level);
 }
 
@@ -194,22 +196,43 @@ index_targets (TsHealLevel *l)
   return TS_OK;
 }
 
+/* Wexler et al.'s confidence of a patch: it falls by TS_HEAL_CONFIDENCE_BASE
+ * per pixel its centre lies inside the hole, so the patches anchored in
+ * known pixels decide the pixels near the hole's outline. */
+static TsStatus
+confidences (TsHealLevel *l)
+{
+  uint32_t *d = ts_heal_distance_to_known (l);
+
+  l->confidence = malloc ((l->active_count ? l->active_count : 1) * sizeof (float));
+  if (!d || !l->confidence)
+    {
+      free (d);
+      return TS_ERROR_OUT_OF_MEMORY;
+    }
+  for (size_t i = 0; i < l->active_count; i++)
+    l->confidence[i] = powf (TS_HEAL_CONFIDENCE_BASE, -(float) d[l->active[i]]);
+  free (d);
+  return TS_OK;
+}
+
 TsStatus
 ts_heal_level_index (TsHealLevel *level, const TsHealArea *area)
 {
   TsStatus status = index_sources (level, area);
-  return status == TS_OK ? index_targets (level) : status;
+  if (status == TS_OK)
+    status = index_targets (level);
+  return status == TS_OK ? confidences (level) : status;
 }
 
-size_t
-ts_heal_hole_depth (const TsHealLevel *l)
+uint32_t *
+ts_heal_distance_to_known (const TsHealLevel *l)
 {
-  size_t w = l->width, h = l->height, n = w * h, deepest = 0;
+  size_t w = l->width, h = l->height, n = w * h;
   uint32_t *d = malloc ((n ? n : 1) * sizeof (uint32_t));
 
-  if (!d)   /* only chooses the level count: a guess from the image will do */
-    return (w < h ? w : h) / 2;
-  /* Two-pass chamfer distance with unit steps in all 8 directions. */
+  if (!d)
+    return NULL;
   for (size_t y = 0; y < h; y++)
     for (size_t x = 0; x < w; x++)
       {
@@ -236,10 +259,22 @@ ts_heal_hole_depth (const TsHealLevel *l)
                 if (d[(y + 1) * w + xx] + 1 < v)
                   v = d[(y + 1) * w + xx] + 1;
             d[y * w + x] = v;
-            if (v > deepest)
-              deepest = v;
           }
       }
+  return d;
+}
+
+size_t
+ts_heal_hole_depth (const TsHealLevel *l)
+{
+  uint32_t *d = ts_heal_distance_to_known (l);
+  size_t deepest = 0;
+
+  if (!d)   /* only chooses the level count: a guess from the image will do */
+    return (l->width < l->height ? l->width : l->height) / 2;
+  for (size_t p = 0; p < l->width * l->height; p++)
+    if (d[p] > deepest)
+      deepest = d[p];
   free (d);
   return deepest;
 }

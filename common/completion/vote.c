@@ -113,7 +113,7 @@ vote_weights (const TsHealLevel *l)
     sigma2 = 1e-6;
 #pragma omp parallel for schedule(static)
   for (ptrdiff_t i = 0; i < (ptrdiff_t) l->active_count; i++)
-    weight[i] = (float) exp (-(double) weight[i] / (2.0 * sigma2)) + 1e-6f;
+    weight[i] = ((float) exp (-(double) weight[i] / (2.0 * sigma2)) + 1e-6f) * l->confidence[i];
   return weight;
 }
 
