@@ -203,9 +203,14 @@ ts_measure_heal (const TsImage *original, const TsImage *result, const uint8_t *
   for (size_t p = 0; p < n; p++)
     {
       out->hole_pixels += hole[p] != 0;
-      if (!hole[p] && memcmp (original->pixels + p * TS_CHANNELS, result->pixels + p * TS_CHANNELS,
-                              TS_CHANNELS * sizeof (float)) != 0)
-        out->outside_changed++;
+      if (!hole[p])
+        for (int c = 0; c < TS_CHANNELS; c++)
+          if (fabsf (original->pixels[p * TS_CHANNELS + c] - result->pixels[p * TS_CHANNELS + c]) >
+              (c == 3 ? TS_HEAL_MEASURE_SAME / 100.0f : TS_HEAL_MEASURE_SAME))
+            {
+              out->outside_changed++;
+              break;
+            }
     }
   for (size_t y = 0; y < h; y++)
     for (size_t x = 0; x < w; x++)

@@ -18,7 +18,10 @@
  * boundary_original  the same figure for the original image;
  * sharpness     mean |grad L| (central differences) in the hole over that
  *               of the near known pixels; < 1 = the fill is blurrier;
- * outside_changed  pixels outside the hole whose value differs at all.
+ * outside_changed  pixels outside the hole whose L, a, b differ by more
+ *               than TS_HEAL_MEASURE_SAME (alpha by a hundredth of it): a
+ *               lossless change of bit depth (8-bit file, 16-bit result)
+ *               does not count; the tests check bytes for bit-identity.
  */
 #ifndef TS_HEAL_METRICS_H
 #define TS_HEAL_METRICS_H
@@ -28,6 +31,7 @@
 #include <stdint.h>
 
 #define TS_HEAL_MEASURE_NEAR 64
+#define TS_HEAL_MEASURE_SAME 0.01f
 
 typedef struct
 {

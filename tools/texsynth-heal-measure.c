@@ -26,7 +26,8 @@ static const char usage_text[] =
   "                near known neighbours (boundary_original: the same in ORIGINAL)\n"
   "  sharpness     mean |grad L| in the hole over that of the near known pixels\n"
   "                (sharpness_original: the same in ORIGINAL)\n"
-  "  outside_changed  pixels outside the hole that differ at all (must be 0)\n";
+  "  outside_changed  pixels outside the hole that differ by more than 0.01 Lab\n"
+  "                (must be 0; a lossless change of bit depth does not count)\n";
 
 static int
 fail (const char *message, const char *arg)

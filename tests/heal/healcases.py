@@ -3,6 +3,7 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 import math
 import struct
+import struct
 import zlib
 
 
@@ -50,3 +51,39 @@ def blob(width, height, area=1600, cx=None, cy=None):
 
 def count(width, height, values):
     return sum(1 for y in range(height) for x in range(width) if values(x, y))
+
+
+# The bundled texture cases: central 128x128 crops of the exemplars at
+# least that large (not tiled: a repeat would let a heal copy the hole's
+# own pixels back), each with a centred 40x40 square and a ~1600 px blob.
+TEXTURES = ["3dweave", "bluemetal", "canyons2", "cracked", "land1", "stone33"]
+HOLES = {"square": lambda: square(128, 128, 40), "blob": lambda: blob(128, 128)}
+SIDE = 128
+
+
+def png_size(p):
+    with open(p, "rb") as f:
+        return struct.unpack(">II", f.read(24)[16:24])
+
+
+def make_texture(gegl_tool, exemplar_path, out_path, side=SIDE, tile=False):
+    """The central side x side crop of the exemplar, or with `tile` of the
+    exemplar repeated (GIMP patterns tile), through the gegl tool."""
+    import subprocess
+    w, h = png_size(exemplar_path)
+    x, y = (0, 0) if tile else ((w - side) // 2, (h - side) // 2)
+    if not tile and (x < 0 or y < 0):
+        raise RuntimeError("%s is %dx%d, smaller than %d" % (exemplar_path, w, h, side))
+    proc = subprocess.run([gegl_tool, "-i", exemplar_path, "-o", out_path, "--"]
+                          + (["gegl:tile"] if tile else [])
+                          + ["gegl:crop", "x=%d" % x, "y=%d" % y,
+                             "width=%d" % side, "height=%d" % side],
+                          capture_output=True, text=True, stdin=subprocess.DEVNULL)
+    if proc.returncode != 0:
+        raise RuntimeError("gegl could not crop %s:\n%s" % (exemplar_path, proc.stderr))
+
+
+def median(values):
+    v = sorted(values)
+    n = len(v)
+    return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
