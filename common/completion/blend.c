@@ -59,7 +59,7 @@ ts_heal_outline_offsets (const TsHealLevel *l, const int32_t *picked, float *off
       return TS_ERROR_OUT_OF_MEMORY;
     }
   memset (offset, 0, n * 3 * sizeof (float));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (l->hole_pixels >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) h; y++)
     for (size_t x = 0; x < w; x++)
       if (l->hole[(size_t) y * w + x] && dist[(size_t) y * w + x] == 1)
@@ -67,7 +67,7 @@ ts_heal_outline_offsets (const TsHealLevel *l, const int32_t *picked, float *off
           outline_mismatch (l, picked, x, (size_t) y, delta + ((size_t) y * w + x) * 3);
   /* Each band pixel: the Gaussian-weighted mean mismatch of the outline
    * pixels around it, fading linearly with its depth into the hole. */
-#pragma omp parallel for schedule(dynamic, 4)
+#pragma omp parallel for schedule(dynamic, 4) if (l->hole_pixels >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) h; y++)
     for (ptrdiff_t x = 0; x < (ptrdiff_t) w; x++)
       {

@@ -13,6 +13,11 @@
  * brick courses and mortar lines over at every level of the bundled
  * cases, and is the window the measures use. */
 #define TS_HEAL_DEFAULT_PATCH 7
+/* Loops over fewer items than this run on one thread: a team's start and
+ * barrier cost more than they save on small levels, and far more when
+ * other processes share the cores. */
+#define TS_HEAL_PARALLEL_MIN 16384
+
 /* Wexler et al. 2007's confidence decay per pixel into the hole. */
 #define TS_HEAL_CONFIDENCE_BASE 1.3f
 

@@ -32,7 +32,7 @@ static void
 downsample_pixels (const float *in, const uint8_t *unknown, size_t w, size_t h, float *out,
                    uint8_t *unknown_out, size_t cw, size_t ch)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (cw * ch >= 4 * TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) ch; y++)
     for (size_t x = 0; x < cw; x++)
       {

@@ -45,7 +45,7 @@ random_valid (const TsHealLevel *l, uint32_t seed, uint32_t level_number, uint32
 void
 ts_heal_random_matches (TsHealLevel *l, uint32_t seed, uint32_t level_number)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (l->active_count >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t i = 0; i < (ptrdiff_t) l->active_count; i++)
     l->nnf[i] = random_valid (l, seed, level_number, 0, (size_t) l->active[i], STREAM_START);
 }
@@ -56,7 +56,7 @@ ts_heal_upsample_matches (const TsHealLevel *coarse, TsHealLevel *fine, uint32_t
 {
   size_t w = fine->width, sw = fine->source_width, sh = fine->source_height;
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (fine->active_count >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t i = 0; i < (ptrdiff_t) fine->active_count; i++)
     {
       size_t p = (size_t) fine->active[i], x = p % w, y = p / w;
@@ -80,7 +80,7 @@ ts_heal_upsample_matches (const TsHealLevel *coarse, TsHealLevel *fine, uint32_t
 void
 ts_heal_update_distances (TsHealLevel *l, TsCancel *cancel)
 {
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) if (l->active_count >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t i = 0; i < (ptrdiff_t) l->active_count; i++)
     {
       if ((i & 255) == 0 && ts_cancel_poll (cancel))
@@ -203,7 +203,7 @@ ts_heal_search_pass (TsHealLevel *l, uint32_t seed, uint32_t level_number, uint3
     return TS_ERROR_OUT_OF_MEMORY;
   memcpy (before, l->nnf, l->active_count * sizeof (int32_t));
   size_t lines = (pass & 2) == 0 ? l->height : l->width;
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (l->active_count >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t line = 0; line < (ptrdiff_t) lines; line++)
     {
       if (ts_cancel_poll (cancel))

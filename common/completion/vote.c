@@ -70,7 +70,7 @@ ts_heal_upsample_target (const TsHealLevel *coarse, TsHealLevel *fine)
 {
   size_t w = fine->width;
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (fine->width * fine->height >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) fine->height; y++)
     for (size_t x = 0; x < w; x++)
       if (fine->hole[(size_t) y * w + x])
@@ -111,7 +111,7 @@ vote_weights (const TsHealLevel *l)
   sigma2 = l->active_count ? total / (double) l->active_count : 1.0;
   if (!(sigma2 > 1e-6))
     sigma2 = 1e-6;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (l->active_count >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t i = 0; i < (ptrdiff_t) l->active_count; i++)
     weight[i] = ((float) exp (-(double) weight[i] / (2.0 * sigma2)) + 1e-6f) * l->confidence[i];
   return weight;
@@ -125,7 +125,7 @@ ts_heal_vote (TsHealLevel *l, bool pick, int32_t *picked, TsCancel *cancel)
 
   if (!weight)
     return SIZE_MAX;
-#pragma omp parallel for schedule(dynamic, 4) reduction(+ : changed)
+#pragma omp parallel for schedule(dynamic, 4) reduction(+ : changed) if (l->active_count >= TS_HEAL_PARALLEL_MIN)
   for (ptrdiff_t yy = 0; yy < (ptrdiff_t) h; yy++)
     {
       size_t y = (size_t) yy;

@@ -87,3 +87,27 @@ def median(values):
     v = sorted(values)
     n = len(v)
     return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
+
+
+def ellipse(cx, cy, rx, ry):
+    return lambda x, y: 255 if ((x + 0.5 - cx) / rx) ** 2 + ((y + 0.5 - cy) / ry) ** 2 <= 1 else 0
+
+
+def rectangle(x0, y0, x1, y1):
+    return lambda x, y: 255 if x0 <= x < x1 and y0 <= y < y1 else 0
+
+
+# Object removals in GIMP 2.10's splash (Debian gimp-data,
+# /usr/share/gimp/2.0/images/gimp-splash.png, 1920x1080): a 512x512 crop
+# (x, y) and the hole in the crop's coordinates.
+SPLASH = "/usr/share/gimp/2.0/images/gimp-splash.png"
+PHOTOS = {
+    # the pebble on the moss, right: an ellipse around it
+    "pebble": ((1376, 420), ellipse(257, 242, 72, 46)),
+    # the "2.10" of the title over the blurred forest: its bounding box
+    "title": ((1350, 0), rectangle(152, 102, 468, 338)),
+    # the single mushroom in front of the cluster: an ellipse
+    "mushroom": ((300, 330), ellipse(260, 250, 45, 80)),
+}
+# The speed case: a 1024x1024 crop with a 200x200 hole in its middle.
+BIG = ((448, 28), rectangle(412, 412, 612, 612))
