@@ -63,12 +63,16 @@ hole_bounds (const uint8_t *hole, size_t w, size_t h, size_t *x0, size_t *y0, si
   return *x1 > 0;
 }
 
+/* Lab values beyond this are no colours; clamped, squared sums of
+ * patches stay finite whatever a float file holds. */
+#define TS_HEAL_MAX_LAB 1000.0f
+
 /* Working form of a pixel (see ts_image_to_working). */
 static void
 to_working (const float *in, float *out)
 {
   for (int c = 0; c < TS_CHANNELS; c++)
-    out[c] = isfinite (in[c]) ? in[c] : 0.0f;
+    out[c] = isfinite (in[c]) ? fmaxf (-TS_HEAL_MAX_LAB, fminf (TS_HEAL_MAX_LAB, in[c])) : 0.0f;
   out[3] = (out[3] < 0.0f ? 0.0f : out[3] > 1.0f ? 1.0f : out[3]) * TS_ALPHA_SCALE;
 }
 

@@ -160,7 +160,7 @@ ts_heal_vote (TsHealLevel *l, bool pick, int32_t *picked, TsCancel *cancel)
               /* The proposal closest to the mean: a real pixel, so the
                * fill keeps the source's sharpness. */
               float best = INFINITY;
-              int32_t choice = picked[p];
+              int32_t choice = -1;
               for (size_t cy = y0; cy <= y1; cy++)
                 for (size_t cx = x0; cx <= x1; cx++)
                   {
@@ -173,7 +173,7 @@ ts_heal_vote (TsHealLevel *l, bool pick, int32_t *picked, TsCancel *cancel)
                         float e = l->source[q * TS_CHANNELS + c] - mean[c];
                         d += e * e;
                       }
-                    if (d < best)
+                    if (d < best || choice < 0)
                       {
                         best = d;
                         choice = (int32_t) q;
