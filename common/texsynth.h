@@ -40,7 +40,8 @@ typedef enum
   TS_ERROR_OUT_OF_MEMORY,        /* an allocation failed                  */
   TS_ERROR_CANCELLED,            /* the progress callback asked to stop   */
   TS_ERROR_IO,                   /* a file could not be read or written   */
-  TS_ERROR_BAD_FILE              /* a file is truncated or malformed      */
+  TS_ERROR_BAD_FILE,             /* a file is truncated or malformed      */
+  TS_ERROR_NOTHING_TO_SAMPLE     /* no whole patch of known pixels to copy */
 } TsStatus;
 
 /* A short, static, human-readable description of a status. */
@@ -262,6 +263,76 @@ TsStatus ts_synthesize_solid (const TsSolidParams *params,
                               TsProgressFunc progress,
                               void *user_data,
                               TsError *error);
+
+/* --- Image completion: filling a hole from the rest (common/completion/) -
+ * Coarse to fine: the hole starts filled from its border inwards, then
+ * texture optimization with the known pixels as hard constraints; every
+ * patch that touches the hole is matched to a patch of known pixels by
+ * PatchMatch (random search over the whole allowed source plus coherent
+ * propagation from the neighbours' matches). */
+
+typedef enum
+{
+  TS_HEAL_ALL_AROUND = 0,  /* sources anywhere within the context           */
+  TS_HEAL_SIDES,           /* only left and right of the hole's bounds      */
+  TS_HEAL_ABOVE_BELOW      /* only above and below the hole's bounds        */
+} TsHealSampleFrom;
+
+#define TS_HEAL_MAX_CONTEXT 16384
+
+typedef struct
+{
+  size_t   context;         /* source patches lie within this many pixels of
+                               the hole's bounding box; 0 = the whole image.
+                               Memory and time then grow with the context,
+                               not with the image.                         */
+  TsHealSampleFrom sample_from;
+  int      quality;         /* 1 .. 10: search effort per patch and level  */
+  uint32_t seed;            /* same seed, same result, any thread count   */
+  int      patch_size;      /* 0 = automatic; else odd 3 .. 31: the
+                               patches of the coarser levels              */
+  int      fine_patch_size; /* 0 = automatic; else odd 3 .. 31: the
+                               patches of the finest level                */
+  size_t   memory_limit;    /* bytes; 0 = default, as TsParams            */
+} TsHealParams;
+
+/* Defaults: whole image, all around, default quality, seed 0. */
+void     ts_heal_params_init (TsHealParams *params);
+
+/* Checks `params`, the image and the hole (one byte per pixel, non-zero =
+ * fill). `source` is NULL to copy from the image's own known pixels, or
+ * another image to copy from (its pixels with alpha 0 are never copied).
+ * Fails with TS_ERROR_NOTHING_TO_SAMPLE when no whole patch of known
+ * pixels lies where sources are allowed (hole covering everything, a
+ * context too small to hold a patch). An empty hole is valid. */
+TsStatus ts_heal_params_validate (const TsHealParams *params, const TsImage *image,
+                                  const uint8_t *hole, const TsImage *source,
+                                  TsError *error);
+
+/* Peak memory of ts_heal, in bytes. */
+TsStatus ts_heal_estimate_memory (const TsHealParams *params, const TsImage *image,
+                                  const uint8_t *hole, const TsImage *source,
+                                  size_t *bytes, TsError *error);
+
+/* The part of the image ts_heal reads and writes, given the hole's bounds
+ * (x0, y0 inclusive, x1, y1 exclusive): the bounds grown by the context
+ * and a patch margin, clipped to the image (the whole image for context
+ * 0). Callers that hold large images need read only this part. */
+void     ts_heal_region (const TsHealParams *params, size_t width, size_t height,
+                         size_t x0, size_t y0, size_t x1, size_t y1,
+                         size_t *rx0, size_t *ry0, size_t *rx1, size_t *ry1);
+
+/* Fills the hole of `image` into `output` (allocated by the caller with
+ * the image's size); pixels outside the hole are copied unchanged. Every
+ * hole pixel becomes a copy of one source pixel, and within a few pixels
+ * of the hole's outline its L, a, b are shifted by a smooth correction
+ * that hides the outline; `source_map` (may be NULL) receives for every
+ * pixel the index y * width + x of that source pixel (in `source` if
+ * given, else in `image`), or -1 outside the hole. On failure `output` is
+ * left untouched. */
+TsStatus ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
+                  const TsImage *source, TsImage *output, int32_t *source_map,
+                  TsProgressFunc progress, void *user_data, TsError *error);
 
 #ifdef __cplusplus
 }

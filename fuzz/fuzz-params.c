@@ -1,5 +1,7 @@
 /* libFuzzer target: parameter validation, the memory estimate, and small
- * random exemplars through ts_synthesize and ts_make_tileable. The input
+ * random exemplars through ts_synthesize, ts_make_tileable and ts_heal
+ * (a hole from the input's bits; pixels outside it must come back as
+ * they were, bit for bit). The input
  * bytes are the parameters (any values, in range or not), then the
  * exemplar's size and pixels (any floats: NaN, Inf, huge, negative).
  * Whatever the input, the engine must return a status with a message
@@ -159,6 +161,45 @@ LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
             check_finite (&out);
         }
       free (out.pixels);
+    }
+  /* The same image healed: hole, context and sampling from the input. */
+  if (ex.pixels || flags & 0x40)
+    {
+      TsHealParams hp;
+      size_t n = ex.width * ex.height;
+      uint8_t hole_bits = take_u8 (&b), *hole = malloc (n ? n : 1);
+      ts_heal_params_init (&hp);
+      hp.context = (size_t) take_int (&b, 12);
+      hp.sample_from = (TsHealSampleFrom) (take_u8 (&b) % 4);
+      hp.quality = p.quality;
+      hp.seed = p.seed;
+      hp.patch_size = p.patch_size;
+      hp.fine_patch_size = p.fine_patch_size;
+      hp.memory_limit = p.memory_limit;
+      for (size_t i = 0; hole && i < n; i++)
+        hole[i] = hole_bits & 1 ? (i * 2654435761u >> (hole_bits >> 4)) % 5 == 0
+                                : (i % (ex.width ? ex.width : 1)) * 3 / (ex.width + 1) == 1;
+      status = hole ? ts_heal_estimate_memory (&hp, &ex, hole, NULL, &bytes, &error) : TS_OK;
+      check_message (status, &error);
+      if (hole && ts_heal_params_validate (&hp, &ex, hole, NULL, &error) == TS_OK)
+        {
+          out.width = ex.width;
+          out.height = ex.height;
+          out.pixels = malloc ((n ? n : 1) * TS_CHANNELS * sizeof (float));
+          if (out.pixels)
+            {
+              status = ts_heal (&hp, &ex, hole, NULL, &out, NULL, NULL, NULL, &error);
+              check_message (status, &error);
+              for (size_t i = 0; status == TS_OK && i < n; i++)
+                if (!hole[i] && memcmp (out.pixels + i * TS_CHANNELS, ex.pixels + i * TS_CHANNELS,
+                                        TS_CHANNELS * sizeof (float)) != 0)
+                  abort ();
+            }
+          free (out.pixels);
+        }
+      else if (hole)
+        check_message (ts_heal_params_validate (&hp, &ex, hole, NULL, &error), &error);
+      free (hole);
     }
   free (ex.pixels);
   return 0;

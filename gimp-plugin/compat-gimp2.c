@@ -9,6 +9,7 @@
 
 #include "texsynth-plugin.h"
 #include "dialogs-gimp2.h"
+#include "compat-gimp2.h"
 
 static void query (void);
 static void run   (const gchar *name, gint n_params, const GimpParam *params,
@@ -54,6 +55,25 @@ query (void)
     { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
     { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
   };
+  static const GimpParamDef heal_args[] =
+  {
+    { GIMP_PDB_INT32,    "run-mode",    "The run mode { RUN-INTERACTIVE (0), RUN-NONINTERACTIVE (1) }" },
+    { GIMP_PDB_IMAGE,    "image",       "Input image" },
+    { GIMP_PDB_DRAWABLE, "drawable",    "Layer to heal in place" },
+    { GIMP_PDB_INT32,    "context",     "Pixels around the hole to copy from (0-16384, 0 = the whole layer)" },
+    { GIMP_PDB_INT32,    "sample-from", "0 all around, 1 sides, 2 above and below" },
+    { GIMP_PDB_INT32,    "quality",     "Search effort (1-10, default 2)" },
+    { GIMP_PDB_INT32,    "seed",        "Random seed (0 or more)" },
+  };
+  static const GimpParamDef uncrop_args[] =
+  {
+    { GIMP_PDB_INT32,    "run-mode", "The run mode { RUN-INTERACTIVE (0), RUN-NONINTERACTIVE (1) }" },
+    { GIMP_PDB_IMAGE,    "image",    "Input image" },
+    { GIMP_PDB_DRAWABLE, "drawable", "Layer to extend" },
+    { GIMP_PDB_INT32,    "percent",  "Border added on each side, percent of the side (1-100)" },
+    { GIMP_PDB_INT32,    "quality",  "Search effort (1-10, default 2)" },
+    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+  };
   static const GimpParamDef image_return[] =
   {
     { GIMP_PDB_IMAGE, "new-image", "The new image" },
@@ -92,6 +112,31 @@ query (void)
                           G_N_ELEMENTS (solid_args), G_N_ELEMENTS (image_return),
                           solid_args, image_return);
   gimp_plugin_menu_register (TS_PROC_SOLID, "<Image>/Filters/Render/Pattern");
+
+  gimp_install_procedure (TS_PROC_HEAL_SELECTION,
+                          N_("Fill the selection with texture continued from around it"),
+                          "Runs the texsynth:heal GEGL operation on the layer with the selection "
+                          "as the hole: pixels at least half selected are filled, the others "
+                          "stay exactly as they were. Undoable.",
+                          AUTHOR, COPYRIGHT, DATE, N_("_Heal Selection by Synthesis..."),
+                          "RGB*, GRAY*", GIMP_PLUGIN, G_N_ELEMENTS (heal_args), 0, heal_args, NULL);
+  gimp_plugin_menu_register (TS_PROC_HEAL_SELECTION, "<Image>/Filters/Enhance");
+  gimp_install_procedure (TS_PROC_HEAL_TRANSPARENCY,
+                          N_("Fill the transparent parts of the layer with texture"),
+                          "Runs the texsynth:heal GEGL operation on the layer: its pixels that "
+                          "are not fully opaque are filled. Undoable.",
+                          AUTHOR, COPYRIGHT, DATE, N_("Heal _Transparency by Synthesis..."),
+                          "RGBA, GRAYA", GIMP_PLUGIN, G_N_ELEMENTS (heal_args), 0, heal_args, NULL);
+  gimp_plugin_menu_register (TS_PROC_HEAL_TRANSPARENCY, "<Image>/Filters/Enhance");
+  gimp_install_procedure (TS_PROC_UNCROP,
+                          N_("Enlarge the canvas and fill the new border with texture"),
+                          "Adds a border of the given percentage on each side of the image and "
+                          "fills it (and any transparent pixel of the layer) with texsynth:heal. "
+                          "Undoable.",
+                          AUTHOR, COPYRIGHT, DATE, N_("_Uncrop by Synthesis..."),
+                          "RGB*, GRAY*", GIMP_PLUGIN, G_N_ELEMENTS (uncrop_args), 0, uncrop_args,
+                          NULL);
+  gimp_plugin_menu_register (TS_PROC_UNCROP, "<Image>/Filters/Enhance");
 }
 
 /* --- reading and writing GIMP's pixels ---------------------------------- */
@@ -201,20 +246,7 @@ new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
 
 /* --- the procedures ---------------------------------------------------- */
 
-typedef struct
-{
-  GimpPDBStatusType status;
-  gchar            *message;   /* for the caller when status is an error */
-  gint32            new_image; /* -1 if none */
-} Outcome;
 
-static gboolean
-fail (Outcome *outcome, GimpPDBStatusType status, gchar *message)
-{
-  outcome->status = status;
-  outcome->message = message;
-  return FALSE;
-}
 
 static gboolean
 run_render (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *outcome)
@@ -448,7 +480,7 @@ run (const gchar      *name,
   if (n_params < 3)
     fail (&outcome, GIMP_PDB_CALLING_ERROR,
           g_strdup_printf (_("%s needs a run mode, an image and a drawable."), name));
-  else if ((message = ts_plugin_check_ops (TS_OP_SYNTHESIZE, TS_OP_TILEABLE, NULL)))
+  else if ((message = ts_plugin_check_ops (TS_OP_SYNTHESIZE, TS_OP_TILEABLE, TS_OP_HEAL, NULL)))
     fail (&outcome, GIMP_PDB_EXECUTION_ERROR, message);
   else if (!gimp_item_is_layer (params[2].data.d_drawable))
     fail (&outcome, GIMP_PDB_CALLING_ERROR, g_strdup (_("The drawable must be a layer.")));
@@ -458,6 +490,9 @@ run (const gchar      *name,
     run_tileable (mode, params, n_params, &outcome);
   else if (g_str_equal (name, TS_PROC_SOLID))
     run_solid (mode, params, n_params, &outcome);
+  else if (g_str_equal (name, TS_PROC_HEAL_SELECTION) || g_str_equal (name, TS_PROC_HEAL_TRANSPARENCY)
+           || g_str_equal (name, TS_PROC_UNCROP))
+    ts_run_heal2 (name, mode, params, n_params, &outcome);
   else
     fail (&outcome, GIMP_PDB_CALLING_ERROR, g_strdup_printf (_("Unknown procedure %s."), name));
 

@@ -9,6 +9,7 @@
 
 #include "texsynth-plugin.h"
 #include "dialogs-gimp3.h"
+#include "compat-gimp3.h"
 
 #define TS_TYPE_PLUG_IN (ts_plug_in_get_type ())
 G_DECLARE_FINAL_TYPE (TsPlugIn, ts_plug_in, TS, PLUG_IN, GimpPlugIn)
@@ -128,7 +129,7 @@ new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
 
 /* --- the procedures ---------------------------------------------------- */
 
-static GimpValueArray *
+GimpValueArray *
 failure (GimpProcedure *procedure, GimpPDBStatusType status, gchar *message)
 {
   GError *error = message ? g_error_new_literal (TS_PLUGIN_ERROR, 0, message) : NULL;
@@ -159,7 +160,7 @@ count_drawables (GimpDrawable **drawables)
 }
 
 /* Checks common to all three procedures; NULL if fine. */
-static gchar *
+gchar *
 check_drawables (GimpDrawable **drawables, gint max)
 {
   gint n = count_drawables (drawables);
@@ -460,6 +461,44 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                                              FALSE, G_PARAM_READWRITE);
       g_free (path);
     }
+  else if (g_str_equal (name, TS_PROC_HEAL_SELECTION) || g_str_equal (name, TS_PROC_HEAL_TRANSPARENCY)
+           || g_str_equal (name, TS_PROC_UNCROP))
+    {
+      procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
+                                            ts_run_heal3, NULL, NULL);
+      if (g_str_equal (name, TS_PROC_HEAL_SELECTION))
+        describe (procedure, _("_Heal Selection by Synthesis..."), "<Image>/Filters/Enhance",
+                  _("Fill the selection with texture continued from around it"),
+                  "Runs the texsynth:heal GEGL operation on the layer with the selection as "
+                  "the hole: pixels at least half selected are filled, the others stay "
+                  "exactly as they were. Undoable.");
+      else if (g_str_equal (name, TS_PROC_HEAL_TRANSPARENCY))
+        describe (procedure, _("Heal _Transparency by Synthesis..."), "<Image>/Filters/Enhance",
+                  _("Fill the transparent parts of the layer with texture"),
+                  "Runs the texsynth:heal GEGL operation on the layer: its pixels that are "
+                  "not fully opaque are filled. Undoable.");
+      else
+        describe (procedure, _("_Uncrop by Synthesis..."), "<Image>/Filters/Enhance",
+                  _("Enlarge the canvas and fill the new border with texture"),
+                  "Adds a border of the given percentage on each side of the image and fills "
+                  "it (and any transparent pixel of the layer) with texsynth:heal. Undoable.");
+      gimp_procedure_set_image_types (procedure, "RGB*, GRAY*");
+      gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
+      if (g_str_equal (name, TS_PROC_UNCROP))
+        gimp_procedure_add_int_argument (procedure, "percent", ts_arg_label ("percent"),
+                                         ts_arg_tooltip ("percent"), 1, TS_PLUGIN_MAX_UNCROP, 20,
+                                         G_PARAM_READWRITE);
+      else
+        {
+          gimp_procedure_add_int_argument (procedure, "context", ts_arg_label ("context"),
+                                           ts_arg_tooltip ("context"), 0, TS_PLUGIN_MAX_CONTEXT,
+                                           0, G_PARAM_READWRITE);
+          gimp_procedure_add_int_argument (procedure, "sample-from", ts_arg_label ("sample-from"),
+                                           ts_arg_tooltip ("sample-from"), 0,
+                                           TS_PLUGIN_MAX_SAMPLE_FROM, 0, G_PARAM_READWRITE);
+        }
+      add_quality_and_seed (procedure);
+    }
   return procedure;
 }
 
@@ -471,6 +510,9 @@ query_procedures (GimpPlugIn *plug_in G_GNUC_UNUSED)
   names = g_list_append (names, g_strdup (TS_PROC_RENDER));
   names = g_list_append (names, g_strdup (TS_PROC_TILEABLE));
   names = g_list_append (names, g_strdup (TS_PROC_SOLID));
+  names = g_list_append (names, g_strdup (TS_PROC_HEAL_SELECTION));
+  names = g_list_append (names, g_strdup (TS_PROC_HEAL_TRANSPARENCY));
+  names = g_list_append (names, g_strdup (TS_PROC_UNCROP));
   return names;
 }
 

@@ -139,6 +139,30 @@ ts_tileable_dialog2 (TsTileableArgs *args)
   return ok;
 }
 
+gboolean
+ts_heal_dialog2 (TsHealArgs *args, const gchar *procedure, const gchar *title)
+{
+  Form form;
+  guint32 seed = (guint32) args->seed;
+  gboolean randomize = FALSE, ok;
+
+  form_begin (&form, title, procedure);
+  if (g_str_equal (procedure, TS_PROC_UNCROP))
+    form_int (&form, "percent", &args->percent, 1, TS_PLUGIN_MAX_UNCROP, 50);
+  else
+    {
+      form_int (&form, "context", &args->context, 0, TS_PLUGIN_MAX_CONTEXT, 500);
+      form_int (&form, "sample-from", &args->sample_from, 0, TS_PLUGIN_MAX_SAMPLE_FROM,
+                TS_PLUGIN_MAX_SAMPLE_FROM);
+    }
+  form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
+            TS_PLUGIN_MAX_QUALITY);
+  form_seed (&form, &seed, &randomize);
+  ok = form_run (&form);
+  args->seed = (gint) (seed & G_MAXINT);
+  return ok;
+}
+
 /* --- the volume file ---------------------------------------------------- */
 
 static void

@@ -10,5 +10,7 @@
 gboolean ts_render_dialog2   (TsRenderArgs *args);
 gboolean ts_tileable_dialog2 (TsTileableArgs *args);
 gboolean ts_solid_dialog2    (TsSolidArgs *args);
+/* `procedure` chooses the fields: context and sample-from, or percent. */
+gboolean ts_heal_dialog2     (TsHealArgs *args, const gchar *procedure, const gchar *title);
 
 #endif /* TEXSYNTH_DIALOGS_GIMP2_H */

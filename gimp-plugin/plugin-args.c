@@ -21,6 +21,14 @@ ts_render_args_init (TsRenderArgs *args)
 }
 
 void
+ts_heal_args_init (TsHealArgs *args)
+{
+  memset (args, 0, sizeof *args);
+  args->percent = 20;
+  args->quality = TS_PLUGIN_DEFAULT_QUALITY;
+}
+
+void
 ts_tileable_args_init (TsTileableArgs *args)
 {
   memset (args, 0, sizeof *args);
@@ -59,6 +67,21 @@ ts_render_args_check (const TsRenderArgs *args)
   if (args->height < 1 || args->height > TS_PLUGIN_MAX_SIDE)
     return g_strdup_printf (_("The height must be between 1 and %d pixels (got %d)."),
                             TS_PLUGIN_MAX_SIDE, args->height);
+  return check_quality_and_seed (args->quality, args->seed);
+}
+
+gchar *
+ts_heal_args_check (const TsHealArgs *args)
+{
+  if (args->context < 0 || args->context > TS_PLUGIN_MAX_CONTEXT)
+    return g_strdup_printf (_("The context width must be between 0 and %d pixels (got %d)."),
+                            TS_PLUGIN_MAX_CONTEXT, args->context);
+  if (args->sample_from < 0 || args->sample_from > TS_PLUGIN_MAX_SAMPLE_FROM)
+    return g_strdup_printf (_("Sample from must be 0 (all around), 1 (sides) or 2 (above and "
+                              "below) (got %d)."), args->sample_from);
+  if (args->percent < 1 || args->percent > TS_PLUGIN_MAX_UNCROP)
+    return g_strdup_printf (_("The border must be between 1 and %d percent (got %d)."),
+                            TS_PLUGIN_MAX_UNCROP, args->percent);
   return check_quality_and_seed (args->quality, args->seed);
 }
 
@@ -141,6 +164,13 @@ static const struct
   { "seed", N_("Random seed"),
     N_("The same seed with the same settings gives the same result, whatever the "
        "number of threads; change it for another variation") },
+  { "context", N_("Context width"),
+    N_("How far around the hole, in pixels, the texture may be copied from; 0 uses "
+       "the whole layer") },
+  { "sample-from", N_("Sample from"),
+    N_("0: all around the hole; 1: only its sides; 2: only above and below it") },
+  { "percent", N_("Border (%)"),
+    N_("Border added on each side, as a percentage of the image's width or height") },
   { "size", N_("Size"),
     N_("Edge of the cube in voxels: the volume has size \303\227 size \303\227 size voxels") },
   { "path", N_("File"),

@@ -290,6 +290,60 @@ ts_plugin_tileable (const TsExemplar     *exemplar,
   return TRUE;
 }
 
+static void connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad);
+
+static gboolean
+same_pixels (GeglBuffer *a, GeglBuffer *b)
+{
+  const GeglRectangle *rect = gegl_buffer_get_extent (a);
+  const Babl *format = gegl_buffer_get_format (a);
+  gint bpp = babl_format_get_bytes_per_pixel (format);
+  GeglBufferIterator *it = gegl_buffer_iterator_new (a, rect, 0, format, GEGL_ACCESS_READ,
+                                                     GEGL_ABYSS_NONE, 2);
+  gboolean same = TRUE;
+
+  gegl_buffer_iterator_add (it, b, rect, 0, format, GEGL_ACCESS_READ, GEGL_ABYSS_NONE);
+  while (gegl_buffer_iterator_next (it))
+    same = same && memcmp (it->items[0].data, it->items[1].data, (gsize) it->length * bpp) == 0;
+  return same;
+}
+
+gboolean
+ts_plugin_heal (GeglBuffer        *pixels,
+                GeglBuffer        *mask,
+                const TsHealArgs  *args,
+                GeglBuffer       **result,
+                GError           **error)
+{
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *source = source_node (graph, pixels);
+  GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_HEAL,
+                                      "context", args->context, "sample-from", args->sample_from,
+                                      "quality", args->quality, "seed", args->seed, NULL);
+  GeglNode *watched[] = { op, NULL };
+  GeglNode *sink;
+
+  /* In the layer's own format: kept pixels come back bit for bit. */
+  *result = gegl_buffer_new (gegl_buffer_get_extent (pixels), gegl_buffer_get_format (pixels));
+  sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
+  gegl_node_link_many (source, op, sink, NULL);
+  if (mask)
+    connect_pads (source_node (graph, mask), op, "aux");
+  run_with_progress (sink, watched, 0.0, 1.0);
+  g_object_unref (graph);
+
+  if (same_pixels (pixels, *result))
+    {
+      g_clear_object (result);
+      g_set_error (error, TS_PLUGIN_ERROR, 0,
+                   _("Nothing was healed: there is nothing to fill, or nothing to copy from "
+                     "(the hole covers everything or the context is too small; the error "
+                     "console says which)."));
+      return FALSE;
+    }
+  return TRUE;
+}
+
 static void
 connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad)
 {

@@ -16,6 +16,9 @@
 #define TS_PROC_RENDER      "plug-in-texsynth-render"
 #define TS_PROC_TILEABLE    "plug-in-texsynth-tileable"
 #define TS_PROC_SOLID       "plug-in-texsynth-solid"
+#define TS_PROC_HEAL_SELECTION    "plug-in-texsynth-heal-selection"
+#define TS_PROC_HEAL_TRANSPARENCY "plug-in-texsynth-heal-transparency"
+#define TS_PROC_UNCROP            "plug-in-texsynth-uncrop"
 #define TS_PLUGIN_HELP_ID   "texsynth"
 
 /* The ops the procedures run. */
@@ -23,6 +26,7 @@
 #define TS_OP_TILEABLE      "texsynth:tileable"
 #define TS_OP_VOLUME_SAVE   "texsynth:volume-save"
 #define TS_OP_VOLUME_SLICE  "texsynth:volume-slice"
+#define TS_OP_HEAL          "texsynth:heal"
 
 /* Ranges and defaults as the ops declare them. */
 #define TS_PLUGIN_MAX_SIDE        16384
@@ -33,6 +37,9 @@
 #define TS_PLUGIN_MAX_SOLID       512
 #define TS_PLUGIN_DEFAULT_SOLID   128
 #define TS_PLUGIN_PATH_MAX        4096
+#define TS_PLUGIN_MAX_CONTEXT     16384
+#define TS_PLUGIN_MAX_SAMPLE_FROM 2      /* all around, sides, above and below */
+#define TS_PLUGIN_MAX_UNCROP      100    /* percent of the side added        */
 
 /* Flat structs: GIMP 2.10 stores last values as raw bytes. */
 typedef struct
@@ -58,7 +65,20 @@ typedef struct
   gint  seed;
 } TsSolidArgs;
 
+/* The three heal procedures: context and sample-from for healing a
+ * selection or transparency, percent for uncrop. */
+typedef struct
+{
+  gint context;      /* pixels around the hole to copy from; 0 = whole layer */
+  gint sample_from;  /* 0 all around, 1 sides, 2 above and below          */
+  gint percent;      /* uncrop: border added on each side, % of the side  */
+  gint quality;
+  gint seed;
+} TsHealArgs;
+
 void ts_render_args_init   (TsRenderArgs *args);
+void ts_heal_args_init     (TsHealArgs *args);
+gchar *ts_heal_args_check  (const TsHealArgs *args);
 void ts_tileable_args_init (TsTileableArgs *args);
 void ts_solid_args_init    (TsSolidArgs *args);
 
@@ -150,6 +170,17 @@ gboolean ts_plugin_solid    (const TsExemplar  *exemplars,
                              gint               n_exemplars,
                              const TsSolidArgs *args,
                              GeglBuffer        *slices[3],
+                             GError           **error);
+
+/* texsynth:heal on `pixels` (a private copy of a layer at (0, 0)) with
+ * `mask` (the same size, "Y" at least 50 % = fill) or NULL (fill the
+ * pixels that are not fully opaque). The result has `pixels`'s format, so
+ * the pixels outside the hole are bit-identical. FALSE with `error` if the
+ * op changed nothing (it explains why on the error console). */
+gboolean ts_plugin_heal     (GeglBuffer        *pixels,
+                             GeglBuffer        *mask,
+                             const TsHealArgs  *args,
+                             GeglBuffer       **result,
                              GError           **error);
 
 #define TS_PLUGIN_ERROR ts_plugin_error_quark ()

@@ -24,6 +24,7 @@ ts_status_string (TsStatus status)
     case TS_ERROR_CANCELLED: return TS_ ("cancelled");
     case TS_ERROR_IO: return TS_ ("a file could not be read or written");
     case TS_ERROR_BAD_FILE: return TS_ ("the file is truncated or malformed");
+    case TS_ERROR_NOTHING_TO_SAMPLE: return TS_ ("there are no known pixels to fill the hole from");
     }
   return TS_ ("unknown error");
 }

@@ -2,7 +2,8 @@
 # (GObject introspection): every case ends with exit status 0, no crash or
 # hang, an image of the requested size, and either no warning or a warning
 # from the op that says what was wrong (with a transparent result for
-# texsynth:synthesize, the unchanged image for texsynth:tileable).
+# texsynth:synthesize, the unchanged image for texsynth:tileable and
+# texsynth:heal).
 # Prints how many distinct bad inputs were tried.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 
@@ -16,8 +17,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import tsops  # noqa: E402
 from tsops import check, note  # noqa: E402
 
-SYNTH, TILE = "texsynth:synthesize", "texsynth:tileable"
-for op in (SYNTH, TILE):
+SYNTH, TILE, HEAL = "texsynth:synthesize", "texsynth:tileable", "texsynth:heal"
+for op in (SYNTH, TILE, HEAL):
     code, _, _ = tsops.run_gegl(["--exists", op])
     if code != 0:
         tsops.die("gegl cannot find %s (GEGL_PATH=%s)" % (op, os.environ.get("GEGL_PATH")))
@@ -181,6 +182,93 @@ for label, value, channel in [("NaN", float("nan"), 0), ("+Inf", float("inf"), 1
         tried["accepted"] += 1
         check(finite and alpha_ok, "%s: exemplar with %s pixels gives finite pixels, alpha in "
               "[0, 1]" % (op, label))
+
+note("-- texsynth:heal: degenerate images, masks and properties")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "heal"))
+import healcases  # noqa: E402
+
+
+def mask_file(name, w, h, fn):
+    p = os.path.join(tmp, "mask-%s.png" % name)
+    healcases.write_grey_png(p, w, h, fn)
+    return ["aux=[", "gegl:load", "path=" + p, "]"]
+
+
+def heal_case(label, image_ops, aux, props, size, word=None):
+    """Like cli_case for texsynth:heal; a refusal must give back the input."""
+    args = ["-o", out, "--"] + image_ops + [HEAL] + ["%s=%s" % kv for kv in props.items()] + aux
+    if os.path.exists(out):
+        os.unlink(out)
+    code, _, err = tsops.run_gegl(args, timeout=300)
+    warnings = op_warnings(err, HEAL)
+    w, h, px = tsops.load(out) if code == 0 and os.path.isfile(out) else (0, 0, [])
+    ok = code == 0 and (w, h) == size and (bool(warnings) and word in warnings[0]
+                                           if word else not warnings)
+    if word and ok:
+        ref = os.path.join(tmp, "ref.png")
+        tsops.run_gegl(["-o", ref, "--"] + image_ops)
+        ok = tsops.load(ref)[2] == px
+    tried["refused" if word else "accepted"] += 1
+    check(ok, "%s: %s %s -> exit %d, %dx%d, %s" % (
+        HEAL, label, props, code, w, h,
+        warnings[0].split(HEAL + ": ")[1] if warnings else "no warning from the op"))
+
+
+bark_ops = ["gegl:load", "path=" + bark]
+centre = mask_file("centre", 82, 90, healcases.square(82, 90, 20))
+heal_case("1x1 image", bark_ops + ["gegl:crop", "width=1", "height=1"],
+          mask_file("one", 1, 1, lambda x, y: 255), {}, (1, 1), "nothing to fill")
+heal_case("2x5 image, half masked", bark_ops + ["gegl:crop", "width=2", "height=5"],
+          mask_file("half", 2, 5, lambda x, y: 255 if y < 2 else 0), {}, (2, 5), "nothing to fill")
+heal_case("transparent image, no mask", color("transparent", 16, 16), [], {}, (16, 16),
+          "no fully opaque pixel")
+heal_case("transparent image, a mask", color("transparent", 16, 16),
+          mask_file("t", 16, 16, healcases.square(16, 16, 4)), {}, (16, 16), "nothing to fill")
+heal_case("one-colour image", color("rgb(0.2,0.5,0.7)", 32, 32),
+          mask_file("c", 32, 32, healcases.square(32, 32, 8)), {}, (32, 32))
+heal_case("mask covering everything", bark_ops, mask_file("all", 82, 90, lambda x, y: 255), {},
+          bark_size, "nothing to fill")
+heal_case("unbounded white mask", bark_ops, ["aux=[", "gegl:color", "value=white", "]"], {},
+          bark_size, "nothing to fill")
+heal_case("empty mask", bark_ops, mask_file("none", 82, 90, lambda x, y: 0), {}, bark_size)
+heal_case("mask larger than the image", bark_ops,
+          mask_file("large", 300, 300, healcases.square(300, 300, 20, 40, 45)), {}, bark_size)
+heal_case("mask 1x1 at the origin", bark_ops, mask_file("dot", 1, 1, lambda x, y: 255), {},
+          bark_size)
+heal_case("grey 49 % mask", bark_ops, mask_file("grey", 82, 90, lambda x, y: 125), {}, bark_size)
+for extra, word in [({"context": 0}, None), ({"context": 16384}, None),
+                    ({"context": 3}, "too small"), ({"context": 1}, "too small"),
+                    ({"sample-from": "sides"}, None), ({"sample-from": "above-below"}, None),
+                    ({"quality": 1}, None), ({"quality": 10}, None),
+                    ({"patch-size": 31, "fine-patch-size": 31}, None),
+                    ({"patch-size": 3, "fine-patch-size": 3}, None),
+                    ({"seed": 0}, None), ({"seed": 2147483647}, None),
+                    ({"memory-limit": 2147483647}, None)]:
+    heal_case("limit", bark_ops, centre, dict({"seed": 3}, **extra), bark_size, word)
+heal_case("memory limit below the need", bark_ops + ["gegl:scale-size", "x=2048", "y=2048"],
+          mask_file("m", 2048, 2048, healcases.square(2048, 2048, 1500)), {"memory-limit": 1},
+          (2048, 2048), "MiB")
+heal_case("sides of a band across the whole width", bark_ops,
+          mask_file("band", 82, 90, lambda x, y: 255 if 30 <= y < 60 else 0),
+          {"sample-from": "sides"}, bark_size, "nothing to fill")
+for label, value, channel in [("NaN", float("nan"), 0), ("+Inf", float("inf"), 1),
+                              ("NaN alpha", float("nan"), 3), ("alpha 1e30", 1e30, 3)]:
+    px = list(bark_px)
+    # Scattered over every 5th pixel, or for alpha a 10x10 block (scattered
+    # holes would leave no 7x7 patch of known pixels to copy).
+    spots = (range(0, bw * bh, 5) if channel != 3 else
+             [y * bw + x for y in range(30, 40) for x in range(30, 40)])
+    for i in spots:
+        px[4 * i + channel] = value
+    # Without a mask: the pixels that are not fully opaque are the hole
+    # (a NaN alpha counts as 0); kept pixels come back as they were, NaN
+    # included, so only the filled ones must be finite.
+    w, h, res = run_on_buffer(HEAL, "RGBA float", px, bw, bh, seed=2)
+    filled = list(spots) if channel == 3 and value != value else []
+    tried["accepted"] += 1
+    check((w, h) == (bw, bh) and all(math.isfinite(res[4 * i + c]) for i in filled
+                                     for c in range(4)),
+          "%s: an image with %s pixels heals to its size, filled pixels finite" % (HEAL, label))
 
 total = tried["accepted"] + tried["refused"]
 note("\nops bad-input figures: %d distinct inputs tried, %d refused with a warning from the op, "

@@ -1,0 +1,133 @@
+/* GIMP 3: the heal procedures (heal selection, heal transparency, uncrop)
+ * around texsynth:heal.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <glib/gi18n-lib.h>
+
+#include "compat-gimp3.h"
+#include "dialogs-gimp3.h"
+
+/* The three heal procedures: read the layer (and the selection over it),
+ * run texsynth:heal, write the result back as one undo step; for uncrop
+ * the layer with a transparent border is healed before GIMP is touched. */
+GimpValueArray *
+ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
+              GimpDrawable **drawables, GimpProcedureConfig *config, gpointer data G_GNUC_UNUSED)
+{
+  const gchar *name = gimp_procedure_get_name (procedure);
+  gboolean uncrop = g_str_equal (name, TS_PROC_UNCROP);
+  gboolean selection = g_str_equal (name, TS_PROC_HEAL_SELECTION);
+  TsHealArgs args;
+  GimpDrawable *drawable;
+  GeglBuffer *buffer, *pixels, *mask = NULL, *result = NULL, *shadow;
+  GeglRectangle rect;
+  const Babl *format;
+  GError *error = NULL;
+  gchar *message;
+  gint x, y, dx, dy;
+  gboolean ok;
+
+  if ((message = check_drawables (drawables, 1)))
+    return failure (procedure, GIMP_PDB_CALLING_ERROR, message);
+  drawable = drawables[0];
+  if (mode == GIMP_RUN_INTERACTIVE)
+    {
+      g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
+      ok = uncrop ? ts_dialog3 (procedure, config, _("Uncrop by Synthesis"),
+                                "percent", "quality", "seed", NULL)
+                  : ts_dialog3 (procedure, config,
+                                selection ? _("Heal Selection by Synthesis")
+                                          : _("Heal Transparency by Synthesis"),
+                                "context", "sample-from", "quality", "seed", NULL);
+      if (!ok)
+        return failure (procedure, GIMP_PDB_CANCEL, NULL);
+    }
+  ts_heal_args_init (&args);
+  if (uncrop)
+    g_object_get (config, "percent", &args.percent, NULL);
+  else
+    g_object_get (config, "context", &args.context, "sample-from", &args.sample_from, NULL);
+  g_object_get (config, "quality", &args.quality, "seed", &args.seed, NULL);
+  if ((message = ts_heal_args_check (&args)))
+    return failure (procedure, GIMP_PDB_CALLING_ERROR, message);
+  if (selection && gimp_selection_is_empty (image))
+    return failure (procedure, GIMP_PDB_CALLING_ERROR,
+                    g_strdup (_("There is no selection: select what to heal.")));
+  if (!selection && !uncrop && !gimp_drawable_has_alpha (drawable))
+    return failure (procedure, GIMP_PDB_CALLING_ERROR,
+                    g_strdup (_("The layer has no alpha channel: there is no transparency to heal.")));
+
+  dx = uncrop ? MAX (1, gimp_image_get_width (image) * args.percent / 100) : 0;
+  dy = uncrop ? MAX (1, gimp_image_get_height (image) * args.percent / 100) : 0;
+  rect = (GeglRectangle) { 0, 0, gimp_drawable_get_width (drawable),
+                           gimp_drawable_get_height (drawable) };
+  format = gimp_drawable_get_format (drawable);
+  if (uncrop && !babl_format_has_alpha (format))
+    format = babl_format_with_space (gimp_drawable_is_gray (drawable) ? "Y'A float"
+                                                                       : "R'G'B'A float", format);
+  buffer = gimp_drawable_get_buffer (drawable);
+  if (uncrop)
+    {
+      GeglRectangle larger = { 0, 0, rect.width + 2 * dx, rect.height + 2 * dy };
+      pixels = gegl_buffer_new (&larger, format);
+      if (pixels && !ts_plugin_transfer (buffer, &rect, pixels, dx, dy, format))
+        g_clear_object (&pixels);
+    }
+  else
+    pixels = ts_plugin_copy_buffer (buffer, &rect, format);
+  g_object_unref (buffer);
+  if (pixels && selection)
+    {
+      /* The selection over the layer, wherever the layer lies. */
+      GeglBuffer *channel = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)));
+      GeglRectangle over;
+      gimp_drawable_get_offsets (drawable, &x, &y);
+      over = (GeglRectangle) { x, y, rect.width, rect.height };
+      mask = ts_plugin_copy_buffer (channel, &over, babl_format ("Y' float"));
+      g_object_unref (channel);
+    }
+  if (!pixels || (selection && !mask))
+    {
+      g_clear_object (&pixels);
+      return failure (procedure, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Out of memory.")));
+    }
+  gimp_progress_init (_("Healing"));
+  if (!ts_plugin_heal (pixels, mask, &args, &result, &error))
+    {
+      g_clear_object (&pixels);
+      g_clear_object (&mask);
+      message = g_strdup (error->message);
+      g_error_free (error);
+      return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
+    }
+
+  /* Only now is the image changed, as one undo step. */
+  gimp_image_undo_group_start (image);
+  if (uncrop)
+    {
+      gimp_image_resize (image, gimp_image_get_width (image) + 2 * dx,
+                         gimp_image_get_height (image) + 2 * dy, dx, dy);
+      if (!gimp_drawable_has_alpha (drawable))
+        gimp_layer_add_alpha (GIMP_LAYER (drawable));
+      gimp_layer_resize (GIMP_LAYER (drawable), rect.width + 2 * dx, rect.height + 2 * dy, dx, dy);
+      rect.width += 2 * dx;
+      rect.height += 2 * dy;
+    }
+  shadow = gimp_drawable_get_shadow_buffer (drawable);
+  ok = ts_plugin_transfer (result, &rect, shadow, 0, 0, gimp_drawable_get_format (drawable));
+  g_object_unref (shadow);
+  if (ok)
+    {
+      gimp_drawable_merge_shadow (drawable, TRUE);
+      gimp_drawable_update (drawable, 0, 0, rect.width, rect.height);
+    }
+  gimp_image_undo_group_end (image);
+  g_object_unref (result);
+  g_object_unref (pixels);
+  g_clear_object (&mask);
+  if (!ok)
+    return failure (procedure, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Out of memory.")));
+  if (mode == GIMP_RUN_INTERACTIVE)
+    gimp_displays_flush ();
+  return gimp_procedure_new_return_values (procedure, GIMP_PDB_SUCCESS, NULL);
+}
