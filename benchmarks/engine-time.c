@@ -7,6 +7,7 @@
  *   -s  output side (256)         -c  central CROP x CROP of the exemplar
  *   -r  runs, the median is shown (1)   -e  seed (1)   -q  quality (default)
  *   -T  tileable                  -p  per-stage seconds (last run)
+ *   -m  also ask for the source map (what source-map=true costs)
  *   -I  re-synthesise the exemplar from itself (output = exemplar size,
  *       identity initial map, preserve weight 1 at the border falling to 0
  *       in the middle): the data-term path that texsynth:tileable uses
@@ -112,9 +113,9 @@ main (int argc, char **argv)
   size_t side = 256, crop = 0;
   int runs = 1, quality = 0, opt, failures = 0;
   uint32_t seed = 1;
-  bool tileable = false, per_stage = false, identity = false;
+  bool tileable = false, per_stage = false, identity = false, source_map = false;
 
-  while ((opt = getopt (argc, argv, "s:c:r:e:q:TpI")) != -1)
+  while ((opt = getopt (argc, argv, "s:c:r:e:q:TpIm")) != -1)
     switch (opt)
       {
       case 's': side = (size_t) strtoul (optarg, NULL, 10); break;
@@ -123,11 +124,12 @@ main (int argc, char **argv)
       case 'e': seed = (uint32_t) strtoul (optarg, NULL, 10); break;
       case 'q': quality = atoi (optarg); break;
       case 'T': tileable = true; break;
+      case 'm': source_map = true; break;
       case 'p': per_stage = true; break;
       case 'I': identity = true; break;
       default:
         fprintf (stderr, "usage: %s [-s SIZE] [-c CROP] [-r RUNS] [-e SEED] [-q QUALITY] "
-                 "[-T] [-p] [-I] EXEMPLAR.png...\n", argv[0]);
+                 "[-T] [-p] [-I] [-m] EXEMPLAR.png...\n", argv[0]);
         return 2;
       }
   if (optind >= argc || side == 0 || runs < 1 || runs > MAX_RUNS)
@@ -196,7 +198,9 @@ main (int argc, char **argv)
       result.width = params.output_width;
       result.height = params.output_height;
       result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
-      if (!result.pixels)
+      params.source_map = source_map ? malloc (result.width * result.height * 2 * sizeof (int32_t))
+                                     : NULL;
+      if (!result.pixels || (source_map && !params.source_map))
         {
           fprintf (stderr, "out of memory\n");
           return 1;
@@ -224,6 +228,7 @@ main (int argc, char **argv)
           printf ("\n");
         }
       free (result.pixels);
+      free (params.source_map);
       free (exemplar.pixels);
       free (initial);
       free (preserve);
