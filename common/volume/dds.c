@@ -314,6 +314,7 @@ ts_volume_read_dds_file (TsInputFile *f, size_t max_bytes, TsVolume8 *v, TsError
   size_t data_offset = 0, bytes;
   uint32_t width, height, depth;
   TsStatus status;
+  void *data;
 
   if (f->length < TS_DDS_LEGACY_DATA_OFFSET)
     return ts_fail (error, TS_ERROR_BAD_FILE,
@@ -345,17 +346,10 @@ ts_volume_read_dds_file (TsInputFile *f, size_t max_bytes, TsVolume8 *v, TsError
 
   if (fseek (f->file, (long) data_offset, SEEK_SET) != 0)
     return ts_fail (error, TS_ERROR_IO, "cannot read '%s'", f->path);
-  v->voxels = malloc (bytes);
-  if (!v->voxels)
-    return ts_fail (error, TS_ERROR_OUT_OF_MEMORY,
-                    "out of memory reading '%s' (%.1f MiB)", f->path, (double) bytes / 1048576.0);
-  status = ts_input_read (f, v->voxels, bytes, error);
+  status = ts_input_read_new (f, bytes, &data, error);
   if (status != TS_OK)
-    {
-      free (v->voxels);
-      v->voxels = NULL;
-      return status;
-    }
+    return status;
+  v->voxels = data;
   to_rgba (v->voxels, bytes / 4, order);
   v->size = width;
   v->channels = 4;

@@ -64,6 +64,24 @@ ts_input_read (TsInputFile *f, void *data, size_t bytes, TsError *error)
   return TS_OK;
 }
 
+TsStatus
+ts_input_read_new (TsInputFile *f, size_t bytes, void **data, TsError *error)
+{
+  TsStatus status;
+
+  *data = malloc (bytes);
+  if (!*data)
+    return ts_fail (error, TS_ERROR_OUT_OF_MEMORY,
+                    "out of memory reading '%s' (%.1f MiB)", f->path, (double) bytes / 1048576.0);
+  status = ts_input_read (f, *data, bytes, error);
+  if (status != TS_OK)
+    {
+      free (*data);
+      *data = NULL;
+    }
+  return status;
+}
+
 void
 ts_input_close (TsInputFile *f)
 {

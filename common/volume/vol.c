@@ -13,7 +13,6 @@
 #include "atomic-file.h"
 #include "engine/error.h"
 
-#include <stdlib.h>
 #include <string.h>
 
 TsStatus
@@ -68,6 +67,7 @@ ts_volume_read_vol_file (TsInputFile *f, size_t max_bytes, TsVolume8 *v, TsError
   uint32_t version, size, channels, bytes_per_channel;
   size_t bytes;
   TsStatus status;
+  void *data;
 
   if (f->length < TS_VOL_HEADER_SIZE)
     return ts_fail (error, TS_ERROR_BAD_FILE,
@@ -104,17 +104,10 @@ ts_volume_read_vol_file (TsInputFile *f, size_t max_bytes, TsVolume8 *v, TsError
                     f->path, (unsigned long) size, (unsigned long) channels, bytes,
                     (unsigned long long) (f->length - TS_VOL_HEADER_SIZE));
 
-  v->voxels = malloc (bytes);
-  if (!v->voxels)
-    return ts_fail (error, TS_ERROR_OUT_OF_MEMORY,
-                    "out of memory reading '%s' (%.1f MiB)", f->path, (double) bytes / 1048576.0);
-  status = ts_input_read (f, v->voxels, bytes, error);
+  status = ts_input_read_new (f, bytes, &data, error);
   if (status != TS_OK)
-    {
-      free (v->voxels);
-      v->voxels = NULL;
-      return status;
-    }
+    return status;
+  v->voxels = data;
   v->size = size;
   v->channels = channels;
   v->wrap = header[TS_VOL_OFFSET_WRAP] != 0;
