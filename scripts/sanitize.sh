@@ -74,7 +74,8 @@ run_valgrind() {
   export TEXSYNTH_EXEMPLARS="${TEXSYNTH_EXEMPLARS:-$root/tests/exemplars}" OMP_NUM_THREADS=2
   export GEGL_PATH; GEGL_PATH=$(ops_path build)
   for cmd in "build/tests/reliability/test-bad-input" "build/tests/reliability/test-cancel 96 16" \
-             "build/tests/engine/test-params" "build/tests/engine/test-pyramid"; do
+             "build/tests/engine/test-params" "build/tests/engine/test-pyramid" \
+             "build/tests/volume-file/test-volume-file"; do
     echo "-- $cmd"
     # shellcheck disable=SC2086
     if ! "${vg[@]}" --log-file="$log" $cmd > /dev/null; then

@@ -217,7 +217,10 @@ test_dds_bytes (void)
   if (data && length >= 148)
     {
       size_t n = SIZE * SIZE * SIZE;
-      uint8_t *legacy = malloc (148 + n * 4);   /* room for the DX10 variants below */
+      /* Room for the DX10 variants below; zeroed so every byte written is set. */
+      uint8_t *legacy = calloc (148 + n * 4, 1);
+      if (!legacy)
+        abort ();
       memcpy (legacy, data, 128);
       ts_put_le32 (legacy + 80, 0x41); /* DDPF_RGB | DDPF_ALPHAPIXELS */
       memset (legacy + 84, 0, 4);
