@@ -29,3 +29,20 @@ crop_central() {
     echo "$out"
   done
 }
+
+# use_ops BUILD OP...: points gegl at BUILD's op modules (and GEGL's own,
+# which GEGL_PATH would otherwise hide), one gegl thread, and exits unless
+# every OP is found: an unknown op is no error to gegl, it passes the image
+# through.
+use_ops() {
+  local build=$1 plugins op
+  shift
+  plugins=$(pkg-config --variable=pluginsdir gegl-0.4 2>/dev/null || echo /usr/lib/x86_64-linux-gnu/gegl-0.4)
+  export GEGL_PATH="$build/operations:$plugins" GEGL_THREADS=1
+  for op in "$@"; do
+    if ! gegl --exists "$op" >/dev/null 2>&1; then
+      echo "$op not found in $build/operations: build first (meson setup build && ninja -C build)" >&2
+      exit 1
+    fi
+  done
+}

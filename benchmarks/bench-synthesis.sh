@@ -41,15 +41,7 @@ while getopts "b:e:s:t:r:x:c:h" opt; do
   esac
 done
 
-gegl_plugins=$(pkg-config --variable=pluginsdir gegl-0.4 2>/dev/null || echo /usr/lib/x86_64-linux-gnu/gegl-0.4)
-export GEGL_PATH="$build/operations:$gegl_plugins"
-export GEGL_THREADS=1
-
-# An unknown op is no error to gegl (it passes the image through): check.
-if ! gegl --exists texsynth:synthesize >/dev/null 2>&1; then
-  echo "texsynth:synthesize not found in $build/operations: build first (meson setup build && ninja -C build)" >&2
-  exit 1
-fi
+use_ops "$build" texsynth:synthesize
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
