@@ -94,11 +94,39 @@ rms (float ssd, size_t dims)
   return sqrt ((double) ssd / (double) dims);
 }
 
+/* The SSD to the nearest `database` window (every pixel a centre) of each
+ * `queries` window (every TS_MEASURE_STEP pixels), in *ssd (the caller
+ * frees it); *grid says where the query centres lie. */
+static TsMeasureStatus
+nearest_windows (const TsImage *queries, bool queries_wrap_x, bool queries_wrap_y,
+                 const TsImage *database, bool database_wrap_x, bool database_wrap_y,
+                 TsWindowGrid *grid, float **ssd)
+{
+  TsWindowGrid db;
+  TsMeasureStatus status;
+
+  *ssd = NULL;
+  if (!big_enough (queries) || !big_enough (database))
+    return TS_MEASURE_TOO_SMALL;
+  *grid = make_grid (queries, TS_MEASURE_RADIUS, TS_MEASURE_STEP, queries_wrap_x, queries_wrap_y);
+  db = make_grid (database, TS_MEASURE_RADIUS, 1, database_wrap_x, database_wrap_y);
+  *ssd = malloc (ts_grid_count (grid) * sizeof (float));
+  if (!*ssd)
+    return TS_MEASURE_OUT_OF_MEMORY;
+  status = nearest_all (grid, &db, *ssd);
+  if (status != TS_MEASURE_OK)
+    {
+      free (*ssd);
+      *ssd = NULL;
+    }
+  return status;
+}
+
 TsMeasureStatus
 ts_measure_coherence (const TsImage *exemplar, const TsImage *result, bool wrap_x,
                       bool wrap_y, double *coherence, double *seam)
 {
-  TsWindowGrid q, db;
+  TsWindowGrid q;
   float *ssd;
   TsMeasureStatus status;
   size_t n, dims, n_seam = 0, n_other = 0;
@@ -106,21 +134,11 @@ ts_measure_coherence (const TsImage *exemplar, const TsImage *result, bool wrap_
   const size_t r = TS_MEASURE_RADIUS;
 
   *coherence = *seam = NAN;
-  if (!big_enough (exemplar) || !big_enough (result))
-    return TS_MEASURE_TOO_SMALL;
-  q = make_grid (result, TS_MEASURE_RADIUS, TS_MEASURE_STEP, wrap_x, wrap_y);
-  db = make_grid (exemplar, TS_MEASURE_RADIUS, 1, false, false);
+  status = nearest_windows (result, wrap_x, wrap_y, exemplar, false, false, &q, &ssd);
+  if (status != TS_MEASURE_OK)
+    return status;
   n = ts_grid_count (&q);
   dims = ts_grid_dims (&q);
-  ssd = malloc (n * sizeof (float));
-  if (!ssd)
-    return TS_MEASURE_OUT_OF_MEMORY;
-  status = nearest_all (&q, &db, ssd);
-  if (status != TS_MEASURE_OK)
-    {
-      free (ssd);
-      return status;
-    }
   /* Summed in a fixed order: same figures with any number of threads. */
   for (size_t i = 0; i < n; i++)
     {
@@ -152,29 +170,21 @@ TsMeasureStatus
 ts_measure_completeness (const TsImage *exemplar, const TsImage *result, bool wrap_x,
                          bool wrap_y, double *completeness)
 {
-  TsWindowGrid q, db;
+  TsWindowGrid q;
   float *ssd;
   TsMeasureStatus status;
   size_t n, dims;
   double sum = 0.0;
 
   *completeness = NAN;
-  if (!big_enough (exemplar) || !big_enough (result))
-    return TS_MEASURE_TOO_SMALL;
-  q = make_grid (exemplar, TS_MEASURE_RADIUS, TS_MEASURE_STEP, false, false);
-  db = make_grid (result, TS_MEASURE_RADIUS, 1, wrap_x, wrap_y);
+  status = nearest_windows (exemplar, false, false, result, wrap_x, wrap_y, &q, &ssd);
+  if (status != TS_MEASURE_OK)
+    return status;
   n = ts_grid_count (&q);
   dims = ts_grid_dims (&q);
-  ssd = malloc (n * sizeof (float));
-  if (!ssd)
-    return TS_MEASURE_OUT_OF_MEMORY;
-  status = nearest_all (&q, &db, ssd);
-  if (status == TS_MEASURE_OK)
-    {
-      for (size_t i = 0; i < n; i++)
-        sum += rms (ssd[i], dims);
-      *completeness = sum / (double) n;
-    }
+  for (size_t i = 0; i < n; i++)
+    sum += rms (ssd[i], dims);
+  *completeness = sum / (double) n;
   free (ssd);
   return status;
 }
