@@ -1,8 +1,8 @@
 # plug-in-texsynth-render-layers in headless GIMP (2.10 or 3): a material
 # set of three layers of one size ("height", the inverse of "albedo";
 # "albedo"; "moved", a copy of albedo with alpha at offset (30, 20)) is
-# synthesised with one layout in 8-bit, 16-bit (driven by "height") and
-# 32-bit float. The new image must have the same layers, names, order and
+# synthesised with one layout in 8-bit, 16-bit (driven by "height"),
+# 32-bit float, and 8-bit tileable (driven by "moved"). The new image must have the same layers, names, order and
 # precision, and the layers must share one layout: "height" stays the
 # inverse of "albedo" and "moved" equals "albedo". Bad input: layers of
 # different sizes give a calling error and leave the image as it was.
@@ -67,14 +67,14 @@ def save_layer(image, index, path):
             % (image, layers("dup"), removals, sf.save("dup", "(vector-ref ls %d)" % index, path)))
 
 
-def run_set(tag, precision, driver):
+def run_set(tag, precision, driver, tileable="FALSE"):
     """Synthesises the set driven by the layer bound to `driver`; reports
     the new image's size, layer count, precision and each layer's alpha,
     prints its layer names, saves its layers."""
     bindings, setup = material_set(precision)
     drivers = "(vector %s)" % driver if V3 else driver
-    call = ("(car (plug-in-texsynth-render-layers RUN-NONINTERACTIVE img %s %d %d FALSE 2 5))"
-            % (drivers, WIDTH, HEIGHT))
+    call = ("(car (plug-in-texsynth-render-layers RUN-NONINTERACTIVE img %s %d %d %s 2 5))"
+            % (drivers, WIDTH, HEIGHT, tileable))
     saves = " ".join(save_layer("out", i, os.path.join(work, "%s-%d.png" % (tag, i)))
                      for i in range(len(NAMES)))
     names = " \"|\" ".join("(car (gimp-item-get-name (vector-ref %s %d)))" % (layers("out"), i)
@@ -104,6 +104,7 @@ bad_size = ("(let* (%s (b (car (gimp-layer-new-from-drawable drw img)))) "
 batch = [run_set("set8", None, "drw"),
          run_set("set16", U16, "h"),
          run_set("setfloat", "PRECISION-FLOAT-LINEAR", "drw"),
+         run_set("settile", None, "m", tileable="TRUE"),
          bad_size]
 code, out, _ = gimp.run(batch)
 lines = out.splitlines()
@@ -134,7 +135,8 @@ def max_error(a, b, fn):
 
 worst = 0.0
 for tag, precision in (("set8", "8-bit"), ("set16", "16-bit, driven by height"),
-                       ("setfloat", "32-bit float")):
+                       ("setfloat", "32-bit float"),
+                       ("settile", "8-bit, tileable, driven by the moved layer")):
     r = fields(tag)
     if not tsops.check(r is not None, "%s (%s): returns a new image" % (tag, precision)):
         continue
@@ -164,6 +166,11 @@ for tag, precision in (("set8", "8-bit"), ("set16", "16-bit, driven by height"),
     tsops.check(cropped < WIDTH * HEIGHT // 2 and max(albedo) - min(albedo) > 0.3,
                 "%s: the layers are synthesised texture, not a crop or a flat colour "
                 "(%d of %d pixels as in the exemplar's corner)" % (tag, cropped, WIDTH * HEIGHT))
+    if tag == "settile":
+        # Every layer tiles, not only the driving one: the layout does.
+        seam = max(max(tsops.wrap_seam_excess(WIDTH, HEIGHT, px)) for px in (height, albedo, moved))
+        tsops.check(seam <= 1.2, "%s: every layer tiles (wrap-around seam figure %.2f <= 1.2)"
+                    % (tag, seam))
 tsops.note("layout agreement: max error %.5f of the range over all precisions" % worst)
 
 r = fields("badsize")
