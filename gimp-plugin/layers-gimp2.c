@@ -7,36 +7,6 @@
 #include "compat-gimp2.h"
 #include "dialogs-gimp2.h"
 
-/* The image's top-level layers, their names and private copies, read
- * before anything runs so that a bad set changes nothing. */
-typedef struct
-{
-  gint        n;
-  gint        driver;     /* index of the driving layer */
-  gchar     **names;
-  gboolean   *alphas;
-  TsExemplar *exemplars;
-  GeglBuffer **results;
-} MaterialSet;
-
-static void
-material_set_clear (MaterialSet *set)
-{
-  for (gint i = 0; i < set->n; i++)
-    {
-      if (set->names)
-        g_free (set->names[i]);
-      if (set->exemplars)
-        ts_exemplar_clear (&set->exemplars[i]);
-      if (set->results)
-        g_clear_object (&set->results[i]);
-    }
-  g_free (set->names);
-  g_free (set->alphas);
-  g_free (set->exemplars);
-  g_free (set->results);
-}
-
 /* Checks that the driving layer is one of the layers and that they all
  * have its size; NULL if fine. */
 static gchar *
@@ -64,13 +34,9 @@ check_layers (const gint *ids, gint n, gint32 driver)
 }
 
 static gboolean
-read_set (const gint *ids, gint n, gint32 driver, MaterialSet *set, gchar **message)
+read_set (const gint *ids, gint n, gint32 driver, TsMaterialSet *set, gchar **message)
 {
-  set->n = n;
-  set->names = g_new0 (gchar *, n);
-  set->alphas = g_new0 (gboolean, n);
-  set->exemplars = g_new0 (TsExemplar, n);
-  set->results = g_new0 (GeglBuffer *, n);
+  ts_material_set_init (set, n);
   for (gint i = 0; i < n; i++)
     {
       if (ids[i] == driver)
@@ -90,7 +56,7 @@ ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params, Outcom
 {
   gint32 driver = params[2].data.d_drawable;
   gint32 image = gimp_item_get_image (driver);
-  MaterialSet set = { 0 };
+  TsMaterialSet set = { 0, 0, NULL, NULL, NULL, NULL };
   TsRenderArgs args;
   GError *error = NULL;
   gchar *message = NULL;
@@ -146,7 +112,7 @@ ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params, Outcom
   if (!read_set (ids, n, driver, &set, &message))
     {
       g_free (ids);
-      material_set_clear (&set);
+      ts_material_set_clear (&set);
       return fail (outcome, GIMP_PDB_EXECUTION_ERROR, message);
     }
   g_free (ids);
@@ -154,16 +120,16 @@ ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params, Outcom
     g_message (_("The exemplar is indexed: the new image is RGB."));
 
   gimp_progress_init (_("Synthesising the layers with one layout"));
-  if (!ts_plugin_render_layers (set.exemplars, set.n, set.driver, &args, set.results, &error))
+  if (!ts_plugin_render_layers (&set, &args, &error))
     {
-      material_set_clear (&set);
+      ts_material_set_clear (&set);
       fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (error->message));
       g_error_free (error);
       return FALSE;
     }
   outcome->new_image = new_image (&set.exemplars[set.driver], set.results,
                                   (const gchar **) set.names, set.alphas, set.n);
-  material_set_clear (&set);
+  ts_material_set_clear (&set);
   if (outcome->new_image < 0)
     return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Could not make the new image.")));
 

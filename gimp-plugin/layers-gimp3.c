@@ -7,36 +7,6 @@
 #include "compat-gimp3.h"
 #include "dialogs-gimp3.h"
 
-/* The image's top-level layers, their names and private copies, read
- * before anything runs so that a bad set changes nothing. */
-typedef struct
-{
-  gint         n;
-  gint         driver;    /* index of the driving layer */
-  gchar      **names;
-  gboolean    *alphas;
-  TsExemplar  *exemplars;
-  GeglBuffer **results;
-} MaterialSet;
-
-static void
-material_set_clear (MaterialSet *set)
-{
-  for (gint i = 0; i < set->n; i++)
-    {
-      if (set->names)
-        g_free (set->names[i]);
-      if (set->exemplars)
-        ts_exemplar_clear (&set->exemplars[i]);
-      if (set->results)
-        g_clear_object (&set->results[i]);
-    }
-  g_free (set->names);
-  g_free (set->alphas);
-  g_free (set->exemplars);
-  g_free (set->results);
-}
-
 /* Checks that the driving layer is one of the layers and that they all
  * have its size; NULL if fine. */
 static gchar *
@@ -66,17 +36,13 @@ check_layers (GimpLayer **layers, GimpDrawable *driver)
 }
 
 static gboolean
-read_set (GimpLayer **layers, GimpDrawable *driver, MaterialSet *set, gchar **message)
+read_set (GimpLayer **layers, GimpDrawable *driver, TsMaterialSet *set, gchar **message)
 {
   gint n = 0;
 
   while (layers[n])
     n++;
-  set->n = n;
-  set->names = g_new0 (gchar *, n);
-  set->alphas = g_new0 (gboolean, n);
-  set->exemplars = g_new0 (TsExemplar, n);
-  set->results = g_new0 (GeglBuffer *, n);
+  ts_material_set_init (set, n);
   for (gint i = 0; i < n; i++)
     {
       GimpDrawable *layer = GIMP_DRAWABLE (layers[i]);
@@ -97,7 +63,7 @@ GimpValueArray *
 ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
                 GimpDrawable **drawables, GimpProcedureConfig *config, gpointer data G_GNUC_UNUSED)
 {
-  MaterialSet set = { 0 };
+  TsMaterialSet set = { 0, 0, NULL, NULL, NULL, NULL };
   TsRenderArgs args;
   GimpDrawable *driver;
   GimpLayer **layers;
@@ -150,7 +116,7 @@ ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
   if (!read_set (layers, driver, &set, &message))
     {
       g_free (layers);
-      material_set_clear (&set);
+      ts_material_set_clear (&set);
       return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
     }
   g_free (layers);
@@ -158,16 +124,16 @@ ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
     g_message (_("The exemplar is indexed: the new image is RGB."));
 
   gimp_progress_init (_("Synthesising the layers with one layout"));
-  if (!ts_plugin_render_layers (set.exemplars, set.n, set.driver, &args, set.results, &error))
+  if (!ts_plugin_render_layers (&set, &args, &error))
     {
-      material_set_clear (&set);
+      ts_material_set_clear (&set);
       message = g_strdup (error->message);
       g_error_free (error);
       return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
     }
   output = new_image (&set.exemplars[set.driver], set.results, (const gchar **) set.names,
                       set.alphas, set.n);
-  material_set_clear (&set);
+  ts_material_set_clear (&set);
   if (!output)
     return failure (procedure, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Could not make the new image.")));
   return success_with_image (procedure, mode, output);

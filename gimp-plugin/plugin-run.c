@@ -313,14 +313,41 @@ layout_is_empty (GeglBuffer *layout)
   return empty;
 }
 
+void
+ts_material_set_init (TsMaterialSet *set, gint n)
+{
+  memset (set, 0, sizeof *set);
+  set->n = n;
+  set->names = g_new0 (gchar *, n);
+  set->alphas = g_new0 (gboolean, n);
+  set->exemplars = g_new0 (TsExemplar, n);
+  set->results = g_new0 (GeglBuffer *, n);
+}
+
+void
+ts_material_set_clear (TsMaterialSet *set)
+{
+  for (gint i = 0; i < set->n; i++)
+    {
+      g_free (set->names[i]);
+      ts_exemplar_clear (&set->exemplars[i]);
+      g_clear_object (&set->results[i]);
+    }
+  g_free (set->names);
+  g_free (set->alphas);
+  g_free (set->exemplars);
+  g_free (set->results);
+  memset (set, 0, sizeof *set);
+}
+
 gboolean
-ts_plugin_render_layers (const TsExemplar   *layers,
-                         gint                n_layers,
-                         gint                driver,
+ts_plugin_render_layers (TsMaterialSet      *set,
                          const TsRenderArgs *args,
-                         GeglBuffer        **results,
                          GError            **error)
 {
+  const TsExemplar *layers = set->exemplars;
+  GeglBuffer **results = set->results;
+  gint n_layers = set->n;
   GeglRectangle rect = { 0, 0, args->width, args->height };
   GeglBuffer *layout = gegl_buffer_new (&rect, babl_format_n (babl_type ("float"), 2));
   GeglNode *graph = gegl_node_new ();
@@ -334,8 +361,8 @@ ts_plugin_render_layers (const TsExemplar   *layers,
   GeglNode *layout_source;
 
   for (gint i = 0; i < n_layers; i++)
-    results[i] = NULL;
-  gegl_node_link_many (source_node (graph, layers[driver].buffer), op, sink, NULL);
+    g_clear_object (&results[i]);
+  gegl_node_link_many (source_node (graph, layers[set->driver].buffer), op, sink, NULL);
   run_with_progress (sink, watched, 0.0, 0.9);
   if (layout_is_empty (layout))
     {

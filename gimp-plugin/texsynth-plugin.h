@@ -169,16 +169,28 @@ gboolean ts_plugin_tileable (const TsExemplar     *exemplar,
                              const TsTileableArgs *args,
                              GeglBuffer          **result,
                              GError              **error);
-/* A material set: synthesises one layout from layers[driver] (texsynth:
- * synthesize with source-map) and lays every layer out with it
- * (gegl:map-absolute, nearest), so that the results stay aligned as the
- * layers were. All layers have one size; results[i] (n entries) is in
- * layers[i].buffer's format. */
-gboolean ts_plugin_render_layers (const TsExemplar   *layers,
-                                  gint                n_layers,
-                                  gint                driver,
+/* A material set: an image's top-level layers of one size, read before
+ * anything runs so that a bad set changes nothing. */
+typedef struct
+{
+  gint         n;
+  gint         driver;     /* index of the layer the layout comes from */
+  gchar      **names;
+  gboolean    *alphas;
+  TsExemplar  *exemplars;
+  GeglBuffer **results;    /* filled by ts_plugin_render_layers */
+} TsMaterialSet;
+
+/* n zeroed entries in each array. */
+void ts_material_set_init  (TsMaterialSet *set, gint n);
+void ts_material_set_clear (TsMaterialSet *set);
+
+/* Synthesises one layout from the driving layer (texsynth:synthesize with
+ * source-map) and lays every layer out with it (gegl:map-absolute,
+ * nearest), so that the results stay aligned as the layers were;
+ * results[i] is in exemplars[i].buffer's format. */
+gboolean ts_plugin_render_layers (TsMaterialSet      *set,
                                   const TsRenderArgs *args,
-                                  GeglBuffer        **results,
                                   GError            **error);
 /* Writes the volume to args->path and returns its three middle slices
  * (orthogonal to x, y and z). `exemplars` has 1 to 3 entries. */
