@@ -37,6 +37,17 @@ query (void)
     { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
     { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
   };
+  static const GimpParamDef layers_args[] =
+  {
+    { GIMP_PDB_INT32,    "run-mode", "The run mode { RUN-INTERACTIVE (0), RUN-NONINTERACTIVE (1) }" },
+    { GIMP_PDB_IMAGE,    "image",    "Input image: a material set, layers of one size" },
+    { GIMP_PDB_DRAWABLE, "drawable", "Driving layer: the layout is synthesised from it" },
+    { GIMP_PDB_INT32,    "width",    "Width of the synthesised layers (1-16384)" },
+    { GIMP_PDB_INT32,    "height",   "Height of the synthesised layers (1-16384)" },
+    { GIMP_PDB_INT32,    "tileable", "Make the result tile seamlessly (TRUE or FALSE)" },
+    { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
+    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+  };
   static const GimpParamDef tileable_args[] =
   {
     { GIMP_PDB_INT32,    "run-mode", "The run mode { RUN-INTERACTIVE (0), RUN-NONINTERACTIVE (1) }" },
@@ -93,6 +104,20 @@ query (void)
                           render_args, image_return);
   gimp_plugin_menu_register (TS_PROC_RENDER, "<Image>/Filters/Render/Pattern");
 
+  gimp_install_procedure (TS_PROC_RENDER_LAYERS,
+                          N_("Synthesise all layers (a material set) with one layout"),
+                          "Synthesises the active layer with the texsynth:synthesize GEGL "
+                          "operation and lays every top-level layer of the image out the same "
+                          "way (its layout as a source map, applied with gegl:map-absolute), "
+                          "so that colour, normal, roughness and height maps stay aligned. All "
+                          "layers must have the same size; the new image has the same layers, "
+                          "names and order, precision and colour profile.",
+                          AUTHOR, COPYRIGHT, DATE, N_("Texture Synthesis of _All Layers..."),
+                          "RGB*, GRAY*, INDEXED*", GIMP_PLUGIN,
+                          G_N_ELEMENTS (layers_args), G_N_ELEMENTS (image_return),
+                          layers_args, image_return);
+  gimp_plugin_menu_register (TS_PROC_RENDER_LAYERS, "<Image>/Filters/Render/Pattern");
+
   gimp_install_procedure (TS_PROC_TILEABLE,
                           N_("Make the layer tile seamlessly by re-synthesising its edges"),
                           "Runs the texsynth:tileable GEGL operation on the layer in place: "
@@ -147,10 +172,8 @@ drawable_space (gint32 drawable)
   return babl_format_get_space (gimp_drawable_get_format (drawable));
 }
 
-/* Copies the layer (or its selected part: the selection's bounds, with
- * unselected pixels made transparent) into `exemplar`. Indexed layers are
- * read as RGB: the new pixels are not in the palette. */
-static gboolean
+/* Indexed layers are read as RGB: the new pixels are not in the palette. */
+gboolean
 read_exemplar (gint32 drawable, gboolean crop_to_selection, TsExemplar *exemplar,
                gchar **message)
 {
@@ -199,17 +222,16 @@ read_exemplar (gint32 drawable, gboolean crop_to_selection, TsExemplar *exemplar
 }
 
 static GimpImageType
-layer_type (const TsExemplar *exemplar)
+layer_type (const TsExemplar *exemplar, gboolean has_alpha)
 {
   if (exemplar->base_type == GIMP_GRAY)
-    return exemplar->has_alpha ? GIMP_GRAYA_IMAGE : GIMP_GRAY_IMAGE;
-  return exemplar->has_alpha ? GIMP_RGBA_IMAGE : GIMP_RGB_IMAGE;
+    return has_alpha ? GIMP_GRAYA_IMAGE : GIMP_GRAY_IMAGE;
+  return has_alpha ? GIMP_RGBA_IMAGE : GIMP_RGB_IMAGE;
 }
 
-/* A new image like the exemplar's (type, precision, profile) with one
- * layer per buffer, the first on top. */
-static gint32
-new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names, gint n)
+gint32
+new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
+           const gboolean *alphas, gint n)
 {
   const GeglRectangle *extent = gegl_buffer_get_extent (layers[0]);
   gboolean ok = TRUE;
@@ -226,7 +248,7 @@ new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
     {
       const GeglRectangle *size = gegl_buffer_get_extent (layers[i]);
       gint32 layer = gimp_layer_new (image, names[i], size->width, size->height,
-                                     layer_type (exemplar), 100.0, GIMP_LAYER_MODE_NORMAL);
+                                     layer_type (exemplar, alphas ? alphas[i] : exemplar->has_alpha), 100.0, GIMP_LAYER_MODE_NORMAL);
       GeglBuffer *target;
 
       gimp_image_insert_layer (image, layer, -1, i);
@@ -310,7 +332,7 @@ run_render (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *o
       g_error_free (error);
       return FALSE;
     }
-  outcome->new_image = new_image (&exemplar, &result, &name, 1);
+  outcome->new_image = new_image (&exemplar, &result, &name, NULL, 1);
   g_object_unref (result);
   ts_exemplar_clear (&exemplar);
   if (outcome->new_image < 0)
@@ -447,7 +469,7 @@ run_solid (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *ou
       g_error_free (error);
       return FALSE;
     }
-  outcome->new_image = new_image (&exemplar, slices, names, 3);
+  outcome->new_image = new_image (&exemplar, slices, names, NULL, 3);
   for (gint i = 0; i < 3; i++)
     g_object_unref (slices[i]);
   ts_exemplar_clear (&exemplar);
@@ -486,6 +508,8 @@ run (const gchar      *name,
     fail (&outcome, GIMP_PDB_CALLING_ERROR, g_strdup (_("The drawable must be a layer.")));
   else if (g_str_equal (name, TS_PROC_RENDER))
     run_render (mode, params, n_params, &outcome);
+  else if (g_str_equal (name, TS_PROC_RENDER_LAYERS))
+    ts_run_layers2 (mode, params, n_params, &outcome);
   else if (g_str_equal (name, TS_PROC_TILEABLE))
     run_tileable (mode, params, n_params, &outcome);
   else if (g_str_equal (name, TS_PROC_SOLID))

@@ -1,5 +1,6 @@
-/* GIMP 2.10 glue shared by its files: a procedure's outcome and the heal
- * procedures (heal-gimp2.c).
+/* GIMP 2.10 glue shared by its files: a procedure's outcome, reading
+ * layers and making images, the heal procedures (heal-gimp2.c) and the
+ * material-set procedure (layers-gimp2.c).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #ifndef TEXSYNTH_COMPAT_GIMP2_H
@@ -22,6 +23,22 @@ fail (Outcome *outcome, GimpPDBStatusType status, gchar *message)
   outcome->message = message;
   return FALSE;
 }
+
+/* Copies the layer (or its selected part: the selection's bounds, with
+ * unselected pixels made transparent) into `exemplar`; FALSE with a
+ * message for the user. */
+gboolean read_exemplar (gint32 drawable, gboolean crop_to_selection, TsExemplar *exemplar,
+                        gchar **message);
+
+/* A new image like the exemplar's (type, precision, profile) with one
+ * layer per buffer, named `names`, the first on top; alphas[i] says
+ * whether layer i has alpha (NULL: as the exemplar). -1 on failure. */
+gint32 new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
+                  const gboolean *alphas, gint n);
+
+/* plug-in-texsynth-render-layers. */
+gboolean ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params,
+                         Outcome *outcome);
 
 /* plug-in-texsynth-heal-selection, -heal-transparency and -uncrop. */
 gboolean ts_run_heal2 (const gchar *name, GimpRunMode mode, const GimpParam *params,

@@ -29,9 +29,7 @@ GIMP_MAIN (TS_TYPE_PLUG_IN)
 
 /* --- reading and writing GIMP's pixels ---------------------------------- */
 
-/* Copies the layer (or its selected part: the selection's bounds, with
- * unselected pixels made transparent) into `exemplar`. */
-static gboolean
+gboolean
 read_exemplar (GimpDrawable *drawable, gboolean crop_to_selection, TsExemplar *exemplar,
                gchar **message)
 {
@@ -82,17 +80,16 @@ read_exemplar (GimpDrawable *drawable, gboolean crop_to_selection, TsExemplar *e
 }
 
 static GimpImageType
-layer_type (const TsExemplar *exemplar)
+layer_type (const TsExemplar *exemplar, gboolean has_alpha)
 {
   if (exemplar->base_type == GIMP_GRAY)
-    return exemplar->has_alpha ? GIMP_GRAYA_IMAGE : GIMP_GRAY_IMAGE;
-  return exemplar->has_alpha ? GIMP_RGBA_IMAGE : GIMP_RGB_IMAGE;
+    return has_alpha ? GIMP_GRAYA_IMAGE : GIMP_GRAY_IMAGE;
+  return has_alpha ? GIMP_RGBA_IMAGE : GIMP_RGB_IMAGE;
 }
 
-/* A new image like the exemplar's (type, precision, profile) with one
- * layer per buffer, the first on top; NULL on failure. */
-static GimpImage *
-new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names, gint n)
+GimpImage *
+new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
+           const gboolean *alphas, gint n)
 {
   const GeglRectangle *extent = gegl_buffer_get_extent (layers[0]);
   GimpImage *image = gimp_image_new_with_precision (extent->width, extent->height,
@@ -109,7 +106,7 @@ new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
     {
       const GeglRectangle *size = gegl_buffer_get_extent (layers[i]);
       GimpLayer *layer = gimp_layer_new (image, names[i], size->width, size->height,
-                                         layer_type (exemplar), 100.0, GIMP_LAYER_MODE_NORMAL);
+                                         layer_type (exemplar, alphas ? alphas[i] : exemplar->has_alpha), 100.0, GIMP_LAYER_MODE_NORMAL);
       GeglBuffer *target;
 
       gimp_image_insert_layer (image, layer, NULL, i);
@@ -138,7 +135,7 @@ failure (GimpProcedure *procedure, GimpPDBStatusType status, gchar *message)
   return gimp_procedure_new_return_values (procedure, status, error);
 }
 
-static GimpValueArray *
+GimpValueArray *
 success_with_image (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image)
 {
   GimpValueArray *values = gimp_procedure_new_return_values (procedure, GIMP_PDB_SUCCESS, NULL);
@@ -233,7 +230,7 @@ run_render (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
       g_error_free (error);
       return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
     }
-  output = new_image (&exemplar, &result, &name, 1);
+  output = new_image (&exemplar, &result, &name, NULL, 1);
   g_object_unref (result);
   ts_exemplar_clear (&exemplar);
   if (!output)
@@ -357,7 +354,7 @@ run_solid (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_U
           g_error_free (error);
         }
     }
-  output = ok ? new_image (&exemplars[0], slices, names, 3) : NULL;
+  output = ok ? new_image (&exemplars[0], slices, names, NULL, 3) : NULL;
   for (gint i = 0; i < n_read; i++)
     ts_exemplar_clear (&exemplars[i]);
   for (gint i = 0; i < 3; i++)
@@ -380,6 +377,19 @@ add_quality_and_seed (GimpProcedure *procedure)
                                    G_PARAM_READWRITE);
   gimp_procedure_add_int_argument (procedure, "seed", ts_arg_label ("seed"),
                                    ts_arg_tooltip ("seed"), 0, G_MAXINT, 0, G_PARAM_READWRITE);
+}
+
+static void
+add_size_and_tileable (GimpProcedure *procedure)
+{
+  gimp_procedure_add_int_argument (procedure, "width", ts_arg_label ("width"),
+                                   ts_arg_tooltip ("width"), 1, TS_PLUGIN_MAX_SIDE, 512,
+                                   G_PARAM_READWRITE);
+  gimp_procedure_add_int_argument (procedure, "height", ts_arg_label ("height"),
+                                   ts_arg_tooltip ("height"), 1, TS_PLUGIN_MAX_SIDE, 512,
+                                   G_PARAM_READWRITE);
+  gimp_procedure_add_boolean_argument (procedure, "tileable", ts_arg_label ("tileable"),
+                                       ts_arg_tooltip ("tileable"), FALSE, G_PARAM_READWRITE);
 }
 
 static void
@@ -408,20 +418,36 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                   "(or its selected part) everywhere, with the texsynth:synthesize GEGL "
                   "operation, in a new image of the same precision and colour profile."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
-      gimp_procedure_add_int_argument (procedure, "width", ts_arg_label ("width"),
-                                       ts_arg_tooltip ("width"), 1, TS_PLUGIN_MAX_SIDE, 512,
-                                       G_PARAM_READWRITE);
-      gimp_procedure_add_int_argument (procedure, "height", ts_arg_label ("height"),
-                                       ts_arg_tooltip ("height"), 1, TS_PLUGIN_MAX_SIDE, 512,
-                                       G_PARAM_READWRITE);
-      gimp_procedure_add_boolean_argument (procedure, "tileable", ts_arg_label ("tileable"),
-                                           ts_arg_tooltip ("tileable"), FALSE, G_PARAM_READWRITE);
+      add_size_and_tileable (procedure);
       add_quality_and_seed (procedure);
       gimp_procedure_add_boolean_aux_argument (procedure, "size-chosen", "Size chosen",
                                                "Whether the user has chosen a size once",
                                                FALSE, G_PARAM_READWRITE);
       gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
                                              _("The image with the synthesised texture"),
+                                             FALSE, G_PARAM_READWRITE);
+    }
+  else if (g_str_equal (name, TS_PROC_RENDER_LAYERS))
+    {
+      procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
+                                            ts_run_layers3, NULL, NULL);
+      describe (procedure, _("Texture Synthesis of _All Layers..."),
+                "<Image>/Filters/Render/Pattern",
+                _("Synthesise all layers (a material set) with one layout"),
+                _("Synthesises the selected layer with the texsynth:synthesize GEGL operation "
+                  "and lays every top-level layer of the image out the same way (its layout "
+                  "as a source map, applied with gegl:map-absolute), so that colour, normal, "
+                  "roughness and height maps stay aligned. All layers must have the same "
+                  "size; the new image has the same layers, names and order, precision and "
+                  "colour profile."));
+      gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
+      add_size_and_tileable (procedure);
+      add_quality_and_seed (procedure);
+      gimp_procedure_add_boolean_aux_argument (procedure, "size-chosen", "Size chosen",
+                                               "Whether the user has chosen a size once",
+                                               FALSE, G_PARAM_READWRITE);
+      gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
+                                             _("The image with the synthesised layers"),
                                              FALSE, G_PARAM_READWRITE);
     }
   else if (g_str_equal (name, TS_PROC_TILEABLE))
@@ -508,6 +534,7 @@ query_procedures (GimpPlugIn *plug_in G_GNUC_UNUSED)
   GList *names = NULL;
 
   names = g_list_append (names, g_strdup (TS_PROC_RENDER));
+  names = g_list_append (names, g_strdup (TS_PROC_RENDER_LAYERS));
   names = g_list_append (names, g_strdup (TS_PROC_TILEABLE));
   names = g_list_append (names, g_strdup (TS_PROC_SOLID));
   names = g_list_append (names, g_strdup (TS_PROC_HEAL_SELECTION));

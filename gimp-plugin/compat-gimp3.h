@@ -1,4 +1,5 @@
-/* GIMP 3 glue shared by its files (compat-gimp3.c, heal-gimp3.c).
+/* GIMP 3 glue shared by its files (compat-gimp3.c, heal-gimp3.c,
+ * layers-gimp3.c).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #ifndef TEXSYNTH_COMPAT_GIMP3_H
@@ -14,6 +15,27 @@ GimpValueArray *failure (GimpProcedure *procedure, GimpPDBStatusType status, gch
 /* Checks common to all procedures: one to `max` layers, the ops found;
  * NULL if fine, else a message. */
 gchar *check_drawables (GimpDrawable **drawables, gint max);
+
+/* Copies the layer (or its selected part: the selection's bounds, with
+ * unselected pixels made transparent) into `exemplar`; FALSE with a
+ * message for the user. */
+gboolean read_exemplar (GimpDrawable *drawable, gboolean crop_to_selection,
+                        TsExemplar *exemplar, gchar **message);
+
+/* A new image like the exemplar's (type, precision, profile) with one
+ * layer per buffer, named `names`, the first on top; alphas[i] says
+ * whether layer i has alpha (NULL: as the exemplar). NULL on failure. */
+GimpImage *new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
+                      const gboolean *alphas, gint n);
+
+/* An interactive run's result: shown, and returned as the new image. */
+GimpValueArray *success_with_image (GimpProcedure *procedure, GimpRunMode mode,
+                                    GimpImage *image);
+
+/* plug-in-texsynth-render-layers. */
+GimpValueArray *ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
+                                GimpDrawable **drawables, GimpProcedureConfig *config,
+                                gpointer data);
 
 /* plug-in-texsynth-heal-selection, -heal-transparency and -uncrop. */
 GimpValueArray *ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,

@@ -104,14 +104,14 @@ form_run (Form *form)
   return ok;
 }
 
-gboolean
-ts_render_dialog2 (TsRenderArgs *args)
+static gboolean
+render_form (TsRenderArgs *args, const gchar *title, const gchar *procedure)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
 
-  form_begin (&form, _("Texture Synthesis"), TS_PROC_RENDER);
+  form_begin (&form, title, procedure);
   form_int (&form, "width", &args->width, 1, TS_PLUGIN_MAX_SIDE, 4096);
   form_int (&form, "height", &args->height, 1, TS_PLUGIN_MAX_SIDE, 4096);
   form_toggle (&form, "tileable", &args->tileable);
@@ -121,6 +121,18 @@ ts_render_dialog2 (TsRenderArgs *args)
   ok = form_run (&form);
   args->seed = (gint) (seed & G_MAXINT);
   return ok;
+}
+
+gboolean
+ts_render_dialog2 (TsRenderArgs *args)
+{
+  return render_form (args, _("Texture Synthesis"), TS_PROC_RENDER);
+}
+
+gboolean
+ts_layers_dialog2 (TsRenderArgs *args)
+{
+  return render_form (args, _("Texture Synthesis of All Layers"), TS_PROC_RENDER_LAYERS);
 }
 
 gboolean

@@ -8,6 +8,7 @@
 #include "texsynth-plugin.h"
 
 gboolean ts_render_dialog2   (TsRenderArgs *args);
+gboolean ts_layers_dialog2   (TsRenderArgs *args);
 gboolean ts_tileable_dialog2 (TsTileableArgs *args);
 gboolean ts_solid_dialog2    (TsSolidArgs *args);
 /* `procedure` chooses the fields: context and sample-from, or percent. */

@@ -96,6 +96,18 @@ ts_tileable_args_check (const TsTileableArgs *args, gint width, gint height)
   return check_quality_and_seed (args->quality, args->seed);
 }
 
+gchar *
+ts_layers_size_check (const gchar *layer, gint width, gint height,
+                      const gchar *driver, gint driver_width, gint driver_height)
+{
+  if (width == driver_width && height == driver_height)
+    return NULL;
+  return g_strdup_printf (_("All layers must have the same size to share one layout: \"%s\" is "
+                            "%d\303\227%d pixels but the driving layer \"%s\" is %d\303\227%d. "
+                            "Scale or crop the layers to one size first."),
+                          layer, width, height, driver, driver_width, driver_height);
+}
+
 /* The formats texsynth:volume-save infers from a file name. */
 static gboolean
 has_volume_extension (const gchar *path)

@@ -292,6 +292,114 @@ ts_plugin_tileable (const TsExemplar     *exemplar,
 
 static void connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad);
 
+/* A layout the op could not make is cleared (all zeros); a real one holds
+ * pixel centres, each coordinate at least 0.5 for an exemplar at (0, 0). */
+static gboolean
+layout_is_empty (GeglBuffer *layout)
+{
+  const Babl *format = gegl_buffer_get_format (layout);
+  GeglBufferIterator *it = gegl_buffer_iterator_new (layout, gegl_buffer_get_extent (layout), 0,
+                                                     format, GEGL_ACCESS_READ,
+                                                     GEGL_ABYSS_NONE, 1);
+  gboolean empty = FALSE;
+
+  while (gegl_buffer_iterator_next (it))
+    {
+      const gfloat *coords = it->items[0].data;
+
+      for (gint i = 0; !empty && i < 2 * it->length; i++)
+        empty = !(coords[i] >= 0.25f);
+    }
+  return empty;
+}
+
+void
+ts_material_set_init (TsMaterialSet *set, gint n)
+{
+  memset (set, 0, sizeof *set);
+  set->n = n;
+  set->names = g_new0 (gchar *, n);
+  set->alphas = g_new0 (gboolean, n);
+  set->exemplars = g_new0 (TsExemplar, n);
+  set->results = g_new0 (GeglBuffer *, n);
+}
+
+void
+ts_material_set_clear (TsMaterialSet *set)
+{
+  for (gint i = 0; i < set->n; i++)
+    {
+      g_free (set->names[i]);
+      ts_exemplar_clear (&set->exemplars[i]);
+      g_clear_object (&set->results[i]);
+    }
+  g_free (set->names);
+  g_free (set->alphas);
+  g_free (set->exemplars);
+  g_free (set->results);
+  memset (set, 0, sizeof *set);
+}
+
+gboolean
+ts_plugin_render_layers (TsMaterialSet      *set,
+                         const TsRenderArgs *args,
+                         GError            **error)
+{
+  const TsExemplar *layers = set->exemplars;
+  GeglBuffer **results = set->results;
+  gint n_layers = set->n;
+  GeglRectangle rect = { 0, 0, args->width, args->height };
+  GeglBuffer *layout = gegl_buffer_new (&rect, babl_format_n (babl_type ("float"), 2));
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_SYNTHESIZE,
+                                      "width", args->width, "height", args->height,
+                                      "tileable", args->tileable, "quality", args->quality,
+                                      "seed", args->seed, "source-map", TRUE, NULL);
+  GeglNode *watched[] = { op, NULL };
+  GeglNode *sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
+                                        "buffer", layout, NULL);
+  GeglNode *layout_source;
+
+  for (gint i = 0; i < n_layers; i++)
+    g_clear_object (&results[i]);
+  gegl_node_link_many (source_node (graph, layers[set->driver].buffer), op, sink, NULL);
+  run_with_progress (sink, watched, 0.0, 0.9);
+  if (layout_is_empty (layout))
+    {
+      g_object_unref (graph);
+      g_object_unref (layout);
+      g_set_error (error, TS_PLUGIN_ERROR, 0,
+                   _("Texture synthesis failed: the exemplar may be too small, fully "
+                     "transparent, or the result too large for the memory (see the "
+                     "error console for the details)."));
+      return FALSE;
+    }
+
+  /* Nearest sampling at pixel centres copies whole pixels: every layer
+   * gets exactly the driving layer's layout. map-absolute's extent is its
+   * input's, so the crop gives the layout's size. */
+  layout_source = source_node (graph, layout);
+  for (gint i = 0; i < n_layers; i++)
+    {
+      GeglNode *map = gegl_node_new_child (graph, "operation", "gegl:map-absolute",
+                                           "sampler-type", GEGL_SAMPLER_NEAREST, NULL);
+      GeglNode *crop = gegl_node_new_child (graph, "operation", "gegl:crop",
+                                            "x", 0.0, "y", 0.0, "width", (gdouble) args->width,
+                                            "height", (gdouble) args->height, NULL);
+
+      results[i] = gegl_buffer_new (&rect, gegl_buffer_get_format (layers[i].buffer));
+      sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
+                                  "buffer", results[i], NULL);
+      gegl_node_link_many (source_node (graph, layers[i].buffer), map, crop, sink, NULL);
+      connect_pads (layout_source, map, "aux");
+      watched[0] = map;
+      run_with_progress (sink, watched, 0.9 + 0.1 * i / n_layers, 0.9 + 0.1 * (i + 1) / n_layers);
+    }
+  g_object_unref (graph);
+  g_object_unref (layout);
+  return TRUE;
+}
+
 static gboolean
 same_pixels (GeglBuffer *a, GeglBuffer *b)
 {

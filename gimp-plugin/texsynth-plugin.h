@@ -19,6 +19,7 @@
 #define TS_PROC_HEAL_SELECTION    "plug-in-texsynth-heal-selection"
 #define TS_PROC_HEAL_TRANSPARENCY "plug-in-texsynth-heal-transparency"
 #define TS_PROC_UNCROP            "plug-in-texsynth-uncrop"
+#define TS_PROC_RENDER_LAYERS     "plug-in-texsynth-render-layers"
 #define TS_PLUGIN_HELP_ID   "texsynth"
 
 /* The ops the procedures run. */
@@ -87,6 +88,10 @@ void ts_solid_args_init    (TsSolidArgs *args);
 gchar *ts_render_args_check   (const TsRenderArgs *args);
 gchar *ts_tileable_args_check (const TsTileableArgs *args, gint width, gint height);
 gchar *ts_solid_args_check    (const TsSolidArgs *args, gint n_exemplars);
+/* A material set is laid out pixel for pixel: every layer must have the
+ * driving layer's size. NULL if `layer` has it, else a message. */
+gchar *ts_layers_size_check   (const gchar *layer, gint width, gint height,
+                               const gchar *driver, gint driver_width, gint driver_height);
 
 /* The label and tooltip of an argument, translated, worded as the ops
  * word their properties; NULL for an unknown name. */
@@ -164,6 +169,29 @@ gboolean ts_plugin_tileable (const TsExemplar     *exemplar,
                              const TsTileableArgs *args,
                              GeglBuffer          **result,
                              GError              **error);
+/* A material set: an image's top-level layers of one size, read before
+ * anything runs so that a bad set changes nothing. */
+typedef struct
+{
+  gint         n;
+  gint         driver;     /* index of the layer the layout comes from */
+  gchar      **names;
+  gboolean    *alphas;
+  TsExemplar  *exemplars;
+  GeglBuffer **results;    /* filled by ts_plugin_render_layers */
+} TsMaterialSet;
+
+/* n zeroed entries in each array. */
+void ts_material_set_init  (TsMaterialSet *set, gint n);
+void ts_material_set_clear (TsMaterialSet *set);
+
+/* Synthesises one layout from the driving layer (texsynth:synthesize with
+ * source-map) and lays every layer out with it (gegl:map-absolute,
+ * nearest), so that the results stay aligned as the layers were;
+ * results[i] is in exemplars[i].buffer's format. */
+gboolean ts_plugin_render_layers (TsMaterialSet      *set,
+                                  const TsRenderArgs *args,
+                                  GError            **error);
 /* Writes the volume to args->path and returns its three middle slices
  * (orthogonal to x, y and z). `exemplars` has 1 to 3 entries. */
 gboolean ts_plugin_solid    (const TsExemplar  *exemplars,

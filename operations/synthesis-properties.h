@@ -56,3 +56,8 @@ property_boolean (source_map, _("Source map"), FALSE)
                  "the first two channels of a float image. gegl:map-absolute "
                  "with sampler-type nearest applies this layout to any map "
                  "aligned with the input (normal, roughness, height)"))
+  /* Hidden from GIMP's generated dialog (the GUM "visible" key, which
+   * GIMP's property GUI evaluates), where the coordinates would show as a
+   * strange two-channel picture; gegl, XML and scripts still set it, and
+   * GIMP users get layouts through Texture Synthesis of All Layers. */
+  ui_meta     ("visible", "0")
