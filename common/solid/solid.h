@@ -113,9 +113,10 @@ void ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level);
 
 /* --- E-step ---------------------------------------------------------------- */
 
-/* Voxels whose `batch_of` entry equals `batch` become the vote closest to
- * the weighted mean of all matched slice neighbourhoods covering them;
- * their per-orientation sources follow. With `histogram`, changes are
+/* Voxels whose `batch_of` entry equals `batch` become the vote of the
+ * best-matched slice neighbourhood covering them (robust weight, lowered
+ * by the histogram excess); each orientation's source follows its own
+ * best vote. With `histogram`, changes are
  * added to `delta`. Returns the number of voxels whose value changed. */
 size_t ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
                        TsSolidMatch *const matches[TS_SOLID_AXES], const uint8_t *batch_of,

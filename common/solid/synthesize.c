@@ -19,6 +19,9 @@
 /* Default neighbourhood sides: large first, then small. */
 #define TS_SOLID_PATCH 9
 #define TS_SOLID_FINE_PATCH 5
+/* Finest level's iterations per pass (2D: 2); the third brings 128^3
+ * cells' completeness from 1.17x to 1.13x the truth's. */
+#define TS_SOLID_FINEST_ITERATIONS 3
 
 typedef struct
 {
@@ -83,7 +86,7 @@ cube (size_t n)
 }
 
 /* The 2D schedule with solid defaults: the same neighbourhood fitting,
- * candidate counts and iteration counts per level. */
+ * candidate counts and iteration counts per level, but for the finest. */
 static void
 plan_level (const Run *run, size_t level, TsLevelPlan *plan)
 {
@@ -106,6 +109,9 @@ plan_level (const Run *run, size_t level, TsLevelPlan *plan)
   /* A neighbourhood no wider than the volume level itself. */
   ex_w = ex_w < n + 4 ? ex_w : n + 4;
   ts_schedule_level (&p, level, run->levels, ex_w, ex_h, plan);
+  if (level == 0 && !sp->max_iterations && run->levels > 1)
+    for (size_t i = 0; i < plan->passes; i++)
+      plan->pass[i].max_iterations = TS_SOLID_FINEST_ITERATIONS;
 }
 
 static double
