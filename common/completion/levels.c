@@ -22,6 +22,7 @@ ts_heal_level_free (TsHealLevel *level)
   free (level->nnf);
   free (level->dist);
   free (level->confidence);
+  free (level->flatness);
   memset (level, 0, sizeof *level);
 }
 
@@ -222,6 +223,8 @@ ts_heal_level_index (TsHealLevel *level, const TsHealArea *area)
   TsStatus status = index_sources (level, area);
   if (status == TS_OK)
     status = index_targets (level);
+  if (status == TS_OK)
+    status = ts_heal_flatness (level);
   return status == TS_OK ? confidences (level) : status;
 }
 
