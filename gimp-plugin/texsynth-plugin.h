@@ -130,6 +130,13 @@ gboolean    ts_plugin_transfer    (GeglBuffer          *source,
                                    gint                 target_y,
                                    const Babl          *format);
 
+/* A "Y' float" mask of `width` x `height` that is 1 everywhere but in
+ * `inner` (0): uncrop's hole, the new border only, so that transparent
+ * pixels the layer already had stay as they are. NULL if out of memory. */
+GeglBuffer *ts_plugin_border_mask (gint                 width,
+                                   gint                 height,
+                                   const GeglRectangle *inner);
+
 /* Copies `rect` of `source` (a GIMP drawable's buffer) into a new memory
  * buffer at (0, 0) in `format`; NULL if out of memory. */
 GeglBuffer *ts_plugin_copy_buffer (GeglBuffer          *source,
