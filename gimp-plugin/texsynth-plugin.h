@@ -92,6 +92,9 @@ gchar *ts_solid_args_check    (const TsSolidArgs *args, gint n_exemplars);
  * word their properties; NULL for an unknown name. */
 const gchar *ts_arg_label   (const gchar *name);
 const gchar *ts_arg_tooltip (const gchar *name);
+/* The translated name of a sample-from choice (0 .. TS_PLUGIN_MAX_SAMPLE_FROM),
+ * for the dialogs' combo boxes; NULL out of range. */
+const gchar *ts_sample_from_label (gint value);
 
 /* A seed for an interactive run: differs from run to run, and is then
  * stored with the last values so that Repeat gives the same result. */
