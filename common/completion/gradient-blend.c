@@ -17,7 +17,8 @@
 /* Weight of the step between two filled neighbours copied from different
  * places (a seam), against 1 within a copy or next to a known pixel: the
  * seam's jump is spread thinly over the copies, which keep their own
- * steps (fill sharpness 0.83 with 1.0, 0.86 with 0.01). */
+ * steps (median fill sharpness of the textures 0.81 with 1, 0.86 with
+ * 0.01, measured before the flatness penalty). */
 #define TS_HEAL_SEAM_WEIGHT 0.01f
 
 static const int step_x[4] = { 1, -1, 0, 0 }, step_y[4] = { 0, 0, 1, -1 };

@@ -138,9 +138,10 @@ TsStatus ts_heal_search_pass (TsHealLevel *level, uint32_t seed, uint32_t level_
                               uint32_t pass, size_t global_tries, TsCancel *cancel);
 
 /* Votes: each hole pixel becomes the weighted mean of the pixels the
- * matched patches covering it propose, or (`pick`, the finest level) the
- * proposal closest to that mean, whose source index goes to `picked`.
- * Returns the number of hole pixels that changed noticeably. */
+ * matched patches covering it propose, or (`pick`) the proposal of the
+ * best-weighted patch, whose source index goes to `picked` (may be NULL).
+ * Returns the number of hole pixels that changed noticeably (with
+ * `picked`: whose pick changed). */
 size_t   ts_heal_vote (TsHealLevel *level, bool pick, int32_t *picked, TsCancel *cancel);
 
 /* Colour offsets (L, a, b per pixel of the level, 3 floats) that hide the
