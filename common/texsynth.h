@@ -324,9 +324,9 @@ void     ts_heal_region (const TsHealParams *params, size_t width, size_t height
 
 /* Fills the hole of `image` into `output` (allocated by the caller with
  * the image's size); pixels outside the hole are copied unchanged. Every
- * hole pixel becomes a copy of one source pixel, and within a few pixels
- * of the hole's outline its L, a, b are shifted by a smooth correction
- * that hides the outline; `source_map` (may be NULL) receives for every
+ * hole pixel becomes a copy of one source pixel with its L, a, b shifted
+ * by a smooth correction (a Poisson blend) that hides the outline and the
+ * seams between copies; `source_map` (may be NULL) receives for every
  * pixel the index y * width + x of that source pixel (in `source` if
  * given, else in `image`), or -1 outside the hole. On failure `output` is
  * left untouched. */

@@ -156,8 +156,8 @@ query (void)
   gimp_install_procedure (TS_PROC_UNCROP,
                           N_("Enlarge the canvas and fill the new border with texture"),
                           "Adds a border of the given percentage on each side of the image and "
-                          "fills it (and any transparent pixel of the layer) with texsynth:heal. "
-                          "Undoable.",
+                          "fills that border only with texsynth:heal (transparent pixels the "
+                          "layer already had stay as they are). Undoable.",
                           AUTHOR, COPYRIGHT, DATE, N_("_Uncrop by Synthesis..."),
                           "RGB*, GRAY*", GIMP_PLUGIN, G_N_ELEMENTS (uncrop_args), 0, uncrop_args,
                           NULL);

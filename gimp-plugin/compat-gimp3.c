@@ -507,7 +507,8 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
         describe (procedure, _("_Uncrop by Synthesis..."), "<Image>/Filters/Enhance",
                   _("Enlarge the canvas and fill the new border with texture"),
                   "Adds a border of the given percentage on each side of the image and fills "
-                  "it (and any transparent pixel of the layer) with texsynth:heal. Undoable.");
+                  "that border only with texsynth:heal (transparent pixels the layer "
+                  "already had stay as they are). Undoable.");
       gimp_procedure_set_image_types (procedure, "RGB*, GRAY*");
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
       if (g_str_equal (name, TS_PROC_UNCROP))

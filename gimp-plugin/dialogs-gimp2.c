@@ -64,6 +64,23 @@ form_int (Form *form, const gchar *name, gint *value, gint min, gint max, gint s
   g_free (label);
 }
 
+/* Where to sample from: a choice by name, not a number. */
+static void
+form_sample_from (Form *form, gint *value)
+{
+  gchar *label = label_text ("sample-from");
+  GtkWidget *combo = gimp_int_combo_box_new (ts_sample_from_label (0), 0,
+                                             ts_sample_from_label (1), 1,
+                                             ts_sample_from_label (2), 2, NULL);
+
+  gimp_int_combo_box_connect (GIMP_INT_COMBO_BOX (combo), *value,
+                              G_CALLBACK (gimp_int_combo_box_get_active), value);
+  gimp_help_set_help_data (combo, ts_arg_tooltip ("sample-from"), NULL);
+  gimp_table_attach_aligned (GTK_TABLE (form->table), 0, form->rows++, label, 0.0, 0.5,
+                             combo, 2, FALSE);
+  g_free (label);
+}
+
 static void
 form_toggle (Form *form, const gchar *name, gboolean *value)
 {
@@ -164,8 +181,7 @@ ts_heal_dialog2 (TsHealArgs *args, const gchar *procedure, const gchar *title)
   else
     {
       form_int (&form, "context", &args->context, 0, TS_PLUGIN_MAX_CONTEXT, 500);
-      form_int (&form, "sample-from", &args->sample_from, 0, TS_PLUGIN_MAX_SAMPLE_FROM,
-                TS_PLUGIN_MAX_SAMPLE_FROM);
+      form_sample_from (&form, &args->sample_from);
     }
   form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
             TS_PLUGIN_MAX_QUALITY);

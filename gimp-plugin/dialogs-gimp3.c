@@ -28,6 +28,14 @@ ts_dialog3 (GimpProcedure       *procedure,
 
   gimp_ui_init (TS_PLUGIN_BINARY);
   dialog = gimp_procedure_dialog_new (procedure, config, title);
+  /* sample-from stays an integer argument for scripts; the dialog shows
+   * its choices by name (fill_list reuses this widget). */
+  if (g_list_find_custom (properties, "sample-from", (GCompareFunc) g_strcmp0))
+    gimp_procedure_dialog_get_int_combo (GIMP_PROCEDURE_DIALOG (dialog), "sample-from",
+                                         GIMP_INT_STORE (gimp_int_store_new (
+                                           ts_sample_from_label (0), 0,
+                                           ts_sample_from_label (1), 1,
+                                           ts_sample_from_label (2), 2, NULL)));
   gimp_procedure_dialog_fill_list (GIMP_PROCEDURE_DIALOG (dialog), properties);
   ok = gimp_procedure_dialog_run (GIMP_PROCEDURE_DIALOG (dialog));
   gtk_widget_destroy (dialog);

@@ -73,9 +73,13 @@ ts_run_heal2 (const gchar *name, GimpRunMode mode, const GimpParam *params, gint
   if (uncrop)
     {
       GeglRectangle larger = { 0, 0, rect.width + 2 * dx, rect.height + 2 * dy };
+      GeglRectangle layer = { dx, dy, rect.width, rect.height };
       pixels = gegl_buffer_new (&larger, format);
       if (pixels && !ts_plugin_transfer (buffer, &rect, pixels, dx, dy, format))
         g_clear_object (&pixels);
+      /* The hole is the new border only: transparency the layer already
+       * had is the user's and stays. */
+      mask = ts_plugin_border_mask (larger.width, larger.height, &layer);
     }
   else
     pixels = ts_plugin_copy_buffer (buffer, &rect, format);
@@ -90,9 +94,10 @@ ts_run_heal2 (const gchar *name, GimpRunMode mode, const GimpParam *params, gint
       mask = ts_plugin_copy_buffer (channel, &over, babl_format ("Y' float"));
       g_object_unref (channel);
     }
-  if (!pixels || (selection && !mask))
+  if (!pixels || ((selection || uncrop) && !mask))
     {
       g_clear_object (&pixels);
+      g_clear_object (&mask);
       return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Out of memory.")));
     }
   gimp_progress_init (_("Healing"));

@@ -217,6 +217,17 @@ ts_arg_tooltip (const gchar *name)
   return i < G_N_ELEMENTS (arg_texts) ? _(arg_texts[i].tooltip) : NULL;
 }
 
+const gchar *
+ts_sample_from_label (gint value)
+{
+  static const gchar *const labels[TS_PLUGIN_MAX_SAMPLE_FROM + 1] =
+  {
+    N_("All around"), N_("Sides only"), N_("Above and below only")
+  };
+
+  return value >= 0 && value <= TS_PLUGIN_MAX_SAMPLE_FROM ? _(labels[value]) : NULL;
+}
+
 gint
 ts_plugin_random_seed (void)
 {

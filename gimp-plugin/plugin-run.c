@@ -47,6 +47,20 @@ ts_plugin_transfer (GeglBuffer          *source,
 }
 
 GeglBuffer *
+ts_plugin_border_mask (gint width, gint height, const GeglRectangle *inner)
+{
+  GeglRectangle extent = { 0, 0, width, height };
+  GeglBuffer *mask = gegl_buffer_new (&extent, babl_format ("Y' float"));
+  const gfloat fill = 1.0f, keep = 0.0f;
+
+  if (!mask)
+    return NULL;
+  gegl_buffer_set_color_from_pixel (mask, &extent, &fill, babl_format ("Y' float"));
+  gegl_buffer_set_color_from_pixel (mask, inner, &keep, babl_format ("Y' float"));
+  return mask;
+}
+
+GeglBuffer *
 ts_plugin_copy_buffer (GeglBuffer          *source,
                        const GeglRectangle *rect,
                        const Babl          *format)

@@ -97,6 +97,9 @@ gchar *ts_layers_size_check   (const gchar *layer, gint width, gint height,
  * word their properties; NULL for an unknown name. */
 const gchar *ts_arg_label   (const gchar *name);
 const gchar *ts_arg_tooltip (const gchar *name);
+/* The translated name of a sample-from choice (0 .. TS_PLUGIN_MAX_SAMPLE_FROM),
+ * for the dialogs' combo boxes; NULL out of range. */
+const gchar *ts_sample_from_label (gint value);
 
 /* A seed for an interactive run: differs from run to run, and is then
  * stored with the last values so that Repeat gives the same result. */
@@ -134,6 +137,13 @@ gboolean    ts_plugin_transfer    (GeglBuffer          *source,
                                    gint                 target_x,
                                    gint                 target_y,
                                    const Babl          *format);
+
+/* A "Y' float" mask of `width` x `height` that is 1 everywhere but in
+ * `inner` (0): uncrop's hole, the new border only, so that transparent
+ * pixels the layer already had stay as they are. NULL if out of memory. */
+GeglBuffer *ts_plugin_border_mask (gint                 width,
+                                   gint                 height,
+                                   const GeglRectangle *inner);
 
 /* Copies `rect` of `source` (a GIMP drawable's buffer) into a new memory
  * buffer at (0, 0) in `format`; NULL if out of memory. */

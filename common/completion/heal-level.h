@@ -62,6 +62,7 @@ typedef struct
   int32_t  *active_index;    /* per target pixel: index in `active` or -1   */
   int32_t  *nnf;             /* per active centre: matched source centre    */
   float    *dist;            /* its patch distance                          */
+  float    *flatness;        /* per source centre: ts_heal_flatness        */
   float    *confidence;      /* its vote's weight for lying near known pixels */
   size_t    hole_pixels;
 } TsHealLevel;
@@ -89,6 +90,13 @@ TsStatus ts_heal_level_downsample (const TsHealLevel *fine, TsHealLevel *coarse)
 
 /* Valid source centres for `area` and the active target centres. */
 TsStatus ts_heal_level_index (TsHealLevel *level, const TsHealArea *area);
+
+/* Per valid source centre, a penalty added to its patch distance when
+ * the patch is flatter (mean |grad L|) than the known pixels around the
+ * hole: blurred first guesses match flat sources best, and without it
+ * the fill stays flatter than its surroundings (Wexler et al.'s method
+ * has the same pull towards smooth solutions). Needs the level indexed. */
+TsStatus ts_heal_flatness (TsHealLevel *level);
 
 /* Chebyshev distance of every pixel to the nearest known one (0 for
  * known pixels), w * h entries to free(); NULL if out of memory. */
@@ -130,9 +138,10 @@ TsStatus ts_heal_search_pass (TsHealLevel *level, uint32_t seed, uint32_t level_
                               uint32_t pass, size_t global_tries, TsCancel *cancel);
 
 /* Votes: each hole pixel becomes the weighted mean of the pixels the
- * matched patches covering it propose, or (`pick`, the finest level) the
- * proposal closest to that mean, whose source index goes to `picked`.
- * Returns the number of hole pixels that changed noticeably. */
+ * matched patches covering it propose, or (`pick`) the proposal of the
+ * best-weighted patch, whose source index goes to `picked` (may be NULL).
+ * Returns the number of hole pixels that changed noticeably (with
+ * `picked`: whose pick changed). */
 size_t   ts_heal_vote (TsHealLevel *level, bool pick, int32_t *picked, TsCancel *cancel);
 
 /* Colour offsets (L, a, b per pixel of the level, 3 floats) that hide the
@@ -142,5 +151,9 @@ size_t   ts_heal_vote (TsHealLevel *level, bool pick, int32_t *picked, TsCancel 
  * the source's; only the slow colour mismatch is corrected. */
 TsStatus ts_heal_outline_offsets (const TsHealLevel *level, const int32_t *picked,
                                   float *offset);
+
+/* Offsets that make the fill keep its sources' colour steps while meeting
+ * the known pixels: a Poisson blend, starting from `offset` as given. */
+TsStatus ts_heal_gradient_blend (const TsHealLevel *level, const int32_t *picked, float *offset);
 
 #endif

@@ -22,6 +22,7 @@ ts_heal_level_free (TsHealLevel *level)
   free (level->nnf);
   free (level->dist);
   free (level->confidence);
+  free (level->flatness);
   memset (level, 0, sizeof *level);
 }
 
@@ -110,8 +111,8 @@ in_area (const TsHealArea *a, size_t x, size_t y)
     }
 }
 
-/* Valid centres: an integral image of unknown source pixels answers
- * "is this whole patch known" in constant time. */
+/* Valid centres: an integral image of unknown (or fully transparent)
+ * source pixels answers "is this whole patch usable" in constant time. */
 static TsStatus
 index_sources (TsHealLevel *l, const TsHealArea *area)
 {
@@ -129,7 +130,11 @@ index_sources (TsHealLevel *l, const TsHealArea *area)
     for (size_t x = 0; x < sw; x++)
       {
         size_t p = y * sw + x;
-        uint32_t unknown = l->source_known ? !l->source_known[p] : l->hole[p] != 0;
+        /* A fully transparent pixel has no colour to give, here as in
+         * a separate source: uncrop must not copy a layer's own holes
+         * into the new border. */
+        uint32_t unknown = l->source_known ? !l->source_known[p]
+                                           : l->hole[p] != 0 || !(l->source[p * TS_CHANNELS + 3] > 0.0f);
         sum[(y + 1) * (sw + 1) + x + 1] = unknown + sum[y * (sw + 1) + x + 1] +
                                           sum[(y + 1) * (sw + 1) + x] - sum[y * (sw + 1) + x];
       }
@@ -222,6 +227,8 @@ ts_heal_level_index (TsHealLevel *level, const TsHealArea *area)
   TsStatus status = index_sources (level, area);
   if (status == TS_OK)
     status = index_targets (level);
+  if (status == TS_OK)
+    status = ts_heal_flatness (level);
   return status == TS_OK ? confidences (level) : status;
 }
 

@@ -85,7 +85,8 @@ ts_heal_update_distances (TsHealLevel *l, TsCancel *cancel)
     {
       if ((i & 255) == 0 && ts_cancel_poll (cancel))
         continue;
-      l->dist[i] = ts_heal_patch_distance (l, (size_t) l->active[i], (size_t) l->nnf[i], FLT_MAX);
+      l->dist[i] = ts_heal_patch_distance (l, (size_t) l->active[i], (size_t) l->nnf[i], FLT_MAX) +
+                   (l->flatness ? l->flatness[l->nnf[i]] : 0.0f);
     }
 }
 
@@ -102,7 +103,10 @@ try_match (const TsHealLevel *l, size_t centre, int32_t candidate, Best *best)
 
   if (candidate < 0 || candidate == best->match || !l->valid[candidate])
     return;
-  d = ts_heal_patch_distance (l, centre, (size_t) candidate, best->dist);
+  float penalty = l->flatness ? l->flatness[candidate] : 0.0f;
+  if (penalty >= best->dist)
+    return;
+  d = ts_heal_patch_distance (l, centre, (size_t) candidate, best->dist - penalty) + penalty;
   if (d < best->dist)
     {
       best->match = candidate;

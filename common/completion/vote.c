@@ -117,10 +117,61 @@ vote_weights (const TsHealLevel *l)
   return weight;
 }
 
+/* The proposal of the best-weighted patch covering pixel p (its index
+ * in the source): a real pixel of one coherent copy, where a mean of the
+ * disagreeing proposals would blur the fill. Ties go to the first in
+ * raster order, so the choice is the same at any thread count. */
+static int32_t
+best_proposal (const TsHealLevel *l, const float *weight, size_t x, size_t y)
+{
+  size_t w = l->width, h = l->height, sw = l->source_width, r = l->radius;
+  size_t x0 = x >= r ? x - r : 0, x1 = x + r < w ? x + r : w - 1;
+  size_t y0 = y >= r ? y - r : 0, y1 = y + r < h ? y + r : h - 1;
+  float best = -1.0f;
+  int32_t choice = -1;
+
+  /* Every centre within the radius is active: its patch holds p. */
+  for (size_t cy = y0; cy <= y1; cy++)
+    for (size_t cx = x0; cx <= x1; cx++)
+      {
+        int32_t i = l->active_index[cy * w + cx];
+        size_t s = (size_t) l->nnf[i];
+        if (weight[i] > best)
+          {
+            best = weight[i];
+            choice = (int32_t) ((s / sw + y - cy) * sw + s % sw + x - cx);
+          }
+      }
+  return choice;
+}
+
+/* The weighted mean of the proposals for pixel p, into `mean`. */
+static void
+mean_proposal (const TsHealLevel *l, const float *weight, size_t x, size_t y, float *mean)
+{
+  size_t w = l->width, h = l->height, sw = l->source_width, r = l->radius;
+  size_t x0 = x >= r ? x - r : 0, x1 = x + r < w ? x + r : w - 1;
+  size_t y0 = y >= r ? y - r : 0, y1 = y + r < h ? y + r : h - 1;
+  double sum[TS_CHANNELS] = { 0 }, wsum = 0.0;
+
+  for (size_t cy = y0; cy <= y1; cy++)
+    for (size_t cx = x0; cx <= x1; cx++)
+      {
+        int32_t i = l->active_index[cy * w + cx];
+        size_t s = (size_t) l->nnf[i];
+        size_t q = (s / sw + y - cy) * sw + s % sw + x - cx;
+        for (int c = 0; c < TS_CHANNELS; c++)
+          sum[c] += (double) weight[i] * l->source[q * TS_CHANNELS + c];
+        wsum += weight[i];
+      }
+  for (int c = 0; c < TS_CHANNELS; c++)
+    mean[c] = (float) (sum[c] / wsum);
+}
+
 size_t
 ts_heal_vote (TsHealLevel *l, bool pick, int32_t *picked, TsCancel *cancel)
 {
-  size_t w = l->width, h = l->height, sw = l->source_width, r = l->radius, changed = 0;
+  size_t w = l->width, h = l->height, changed = 0;
   float *weight = vote_weights (l);
 
   if (!weight)
@@ -134,60 +185,27 @@ ts_heal_vote (TsHealLevel *l, bool pick, int32_t *picked, TsCancel *cancel)
       for (size_t x = 0; x < w; x++)
         {
           size_t p = y * w + x;
-          size_t x0 = x >= r ? x - r : 0, x1 = x + r < w ? x + r : w - 1;
-          size_t y0 = y >= r ? y - r : 0, y1 = y + r < h ? y + r : h - 1;
-          double sum[TS_CHANNELS] = { 0 }, wsum = 0.0;
-          float mean[TS_CHANNELS], *t = l->target + p * TS_CHANNELS;
-          float diff = 0.0f;
+          float value[TS_CHANNELS], *t = l->target + p * TS_CHANNELS, diff = 0.0f;
 
           if (!l->hole[p])
             continue;
-          /* Every centre within the radius is active: its patch holds p. */
-          for (size_t cy = y0; cy <= y1; cy++)
-            for (size_t cx = x0; cx <= x1; cx++)
-              {
-                int32_t i = l->active_index[cy * w + cx];
-                size_t s = (size_t) l->nnf[i];
-                size_t q = (s / sw + y - cy) * sw + s % sw + x - cx;
-                for (int c = 0; c < TS_CHANNELS; c++)
-                  sum[c] += (double) weight[i] * l->source[q * TS_CHANNELS + c];
-                wsum += weight[i];
-              }
-          for (int c = 0; c < TS_CHANNELS; c++)
-            mean[c] = (float) (sum[c] / wsum);
           if (pick)
             {
-              /* The proposal closest to the mean: a real pixel, so the
-               * fill keeps the source's sharpness. */
-              float best = INFINITY;
-              int32_t choice = -1;
-              for (size_t cy = y0; cy <= y1; cy++)
-                for (size_t cx = x0; cx <= x1; cx++)
-                  {
-                    int32_t i = l->active_index[cy * w + cx];
-                    size_t s = (size_t) l->nnf[i];
-                    size_t q = (s / sw + y - cy) * sw + s % sw + x - cx;
-                    float d = 0.0f;
-                    for (int c = 0; c < TS_CHANNELS; c++)
-                      {
-                        float e = l->source[q * TS_CHANNELS + c] - mean[c];
-                        d += e * e;
-                      }
-                    if (d < best || choice < 0)
-                      {
-                        best = d;
-                        choice = (int32_t) q;
-                      }
-                  }
-              changed += choice != picked[p];
-              picked[p] = choice;
-              memcpy (mean, l->source + (size_t) choice * TS_CHANNELS, sizeof mean);
+              int32_t choice = best_proposal (l, weight, x, y);
+              memcpy (value, l->source + (size_t) choice * TS_CHANNELS, sizeof value);
+              if (picked)
+                {
+                  changed += choice != picked[p];
+                  picked[p] = choice;
+                }
             }
+          else
+            mean_proposal (l, weight, x, y, value);
           for (int c = 0; c < TS_CHANNELS; c++)
-            diff += (t[c] - mean[c]) * (t[c] - mean[c]);
-          if (!pick)
+            diff += (t[c] - value[c]) * (t[c] - value[c]);
+          if (!picked)
             changed += diff > TS_HEAL_CHANGE;
-          memcpy (t, mean, sizeof mean);
+          memcpy (t, value, sizeof value);
         }
     }
   free (weight);

@@ -25,6 +25,7 @@ V3 = gimp.version >= 3
 stone = tsops.exemplar("stone33.png")   # 156x156, 8-bit RGB
 healed = os.path.join(work, "healed.png")
 uncropped = os.path.join(work, "uncropped.png")
+uncropped_hole = os.path.join(work, "uncropped-hole.png")
 
 
 def load():
@@ -88,6 +89,12 @@ batch = [
     % (load(), DRW, gimp.sf.save("img", "drw", uncropped),
        message("uncrop", "(car (%s img))" % IMAGE_WIDTH, "(car (%s img))" % IMAGE_HEIGHT,
                "(car (%s drw))" % DRAWABLE_WIDTH)),
+    # A layer that already has a transparent square: uncrop fills the new
+    # border only.
+    "(let* (%s) (gimp-layer-add-alpha drw) "
+    "(gimp-image-select-rectangle img CHANNEL-OP-REPLACE 60 60 20 20) (%s drw) "
+    "(gimp-selection-none img) (plug-in-texsynth-uncrop RUN-NONINTERACTIVE img %s 10 2 1) %s %s)"
+    % (load(), CLEAR, DRW, gimp.sf.save("img", "drw", uncropped_hole), message("uncrophole", 1)),
 ]
 errors = [
     '(begin (gimp-message "TSCALL nosel") (let* (%s) %s))' % (load(), heal_sel % (0, 0)),
@@ -151,6 +158,23 @@ if tsops.check(os.path.isfile(uncropped), "uncrop: saved"):
                 != after[4 * ((y + 15) * uw + x + 15):4 * ((y + 15) * uw + x + 15) + 4])
     tsops.check(moved == 0, "uncrop: the picture is kept bit for bit, 15 pixels in")
     tsops.check(min(after[3::4]) == 255, "uncrop: the new border is filled and opaque")
+if tsops.check(fields("uncrophole") is not None and os.path.isfile(uncropped_hole),
+               "uncrop of a layer with a transparent square: ran and saved"):
+    w, h, before = tsops.load_bytes(stone, "R'G'B'A u8")
+    uw, uh, after = tsops.load_bytes(uncropped_hole, "R'G'B'A u8")
+    square = lambda x, y: 60 <= x < 80 and 60 <= y < 80  # noqa: E731
+    alpha = lambda x, y: after[4 * (y * uw + x) + 3]  # noqa: E731
+    kept_clear = sum(1 for y in range(60, 80) for x in range(60, 80) if alpha(x + 15, y + 15) == 0)
+    moved = sum(1 for y in range(h) for x in range(w) if not square(x, y)
+                and before[4 * (y * w + x):4 * (y * w + x) + 4]
+                != after[4 * ((y + 15) * uw + x + 15):4 * ((y + 15) * uw + x + 15) + 4])
+    border_open = sum(1 for y in range(uh) for x in range(uw)
+                      if not (15 <= x < 15 + w and 15 <= y < 15 + h) and alpha(x, y) != 255)
+    tsops.check(kept_clear == 400, "uncrop leaves the layer's own transparent square "
+                "transparent (%d of 400 pixels)" % kept_clear)
+    tsops.check(moved == 0, "uncrop keeps the rest of the picture bit for bit (%d moved)" % moved)
+    tsops.check(border_open == 0, "uncrop fills the new border opaque, copying no transparent "
+                "pixel (%d are not)" % border_open)
 # GIMP 3's Script-Fu checks the registered range itself.
 for tag, pattern in [("nosel", "no selection"), ("noalpha", "no alpha channel"),
                      ("badcontext", "out of range" if V3 else "context width"),

@@ -1,6 +1,7 @@
 /* ts_heal in C: pixels outside the hole unchanged, every hole pixel from a
  * known source pixel, the same result at 1 and 2 threads, memory that
- * grows with the context and not the image, and the errors of bad input.
+ * grows with the context and not the image, progress reports and
+ * cancellation, and the errors of bad input.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "test-util.h"
 
@@ -142,6 +143,70 @@ test_errors (const TsImage *image)
   free (hole);
 }
 
+typedef struct
+{
+  size_t calls, stop_after, backwards, out_of_range, done_calls;
+  double last;
+} Progress;
+
+static bool
+record_progress (double fraction, const char *stage, void *user_data)
+{
+  Progress *p = user_data;
+  p->calls++;
+  p->backwards += fraction < p->last;
+  p->out_of_range += !(fraction >= 0.0 && fraction <= 1.0);
+  p->done_calls += stage && strcmp (stage, "done") == 0;
+  p->last = fraction;
+  return p->stop_after == 0 || p->calls < p->stop_after;
+}
+
+/* Progress rises from 0 to 1 and ends with "done"; a callback that says
+ * stop cancels the heal soon, with TS_ERROR_CANCELLED and the output
+ * untouched. */
+static void
+test_progress_and_cancel (const TsImage *image)
+{
+  size_t w = image->width, h = image->height, n = w * h;
+  uint8_t *hole = square_hole (w, h, w / 2 - 12, h / 2 - 12, 24);
+  float *out = malloc (n * TS_CHANNELS * sizeof (float));
+  TsImage output = { w, h, out };
+  Progress progress = { 0 };
+  TsHealParams p;
+  TsError error;
+  size_t touched = 0, full_run;
+
+  if (!hole || !out)
+    abort ();
+  ts_heal_params_init (&p);
+  p.seed = 3;
+  CHECK (ts_heal (&p, image, hole, NULL, &output, NULL, record_progress, &progress, &error) == TS_OK,
+         "%s", error.message);
+  CHECK (progress.calls >= 5, "progress reported %zu times (at least 5)", progress.calls);
+  CHECK (progress.backwards == 0, "progress went backwards %zu times", progress.backwards);
+  CHECK (progress.out_of_range == 0, "%zu progress fractions outside 0..1", progress.out_of_range);
+  CHECK (progress.last == 1.0 && progress.done_calls == 1,
+         "progress ends at 1 with one \"done\" (last %g, %zu done)", progress.last,
+         progress.done_calls);
+  full_run = progress.calls;
+
+  for (size_t i = 0; i < n * TS_CHANNELS; i++)
+    out[i] = -7.0f;
+  memset (&progress, 0, sizeof progress);
+  progress.stop_after = 2;
+  CHECK (ts_heal (&p, image, hole, NULL, &output, NULL, record_progress, &progress, &error) ==
+           TS_ERROR_CANCELLED,
+         "a callback returning false cancels the heal");
+  CHECK (strstr (error.message, "cancel") != NULL, "the error says so: %s", error.message);
+  CHECK (progress.calls < full_run, "cancelled after %zu reports (a full run makes %zu)",
+         progress.calls, full_run);
+  for (size_t i = 0; i < n * TS_CHANNELS; i++)
+    touched += out[i] != -7.0f;
+  CHECK (touched == 0, "a cancelled heal leaves the output untouched (%zu values written)", touched);
+  free (out);
+  free (hole);
+}
+
 int
 main (void)
 {
@@ -150,6 +215,7 @@ main (void)
   test_load_exemplar ("stone33.png", &stone);
   test_fill (&stone);
   test_errors (&stone);
+  test_progress_and_cancel (&stone);
   test_memory_follows_context ();
   free (stone.pixels);
   return test_finish ("test-heal-engine");
