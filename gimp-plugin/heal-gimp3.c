@@ -19,9 +19,9 @@ ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
   gboolean selection = g_str_equal (name, TS_PROC_HEAL_SELECTION);
   TsHealArgs args;
   GimpDrawable *drawable;
-  GeglBuffer *buffer, *pixels, *mask = NULL, *result = NULL, *shadow;
+  TsHealLayer layer;
+  GeglBuffer *result = NULL, *shadow;
   GeglRectangle rect;
-  const Babl *format;
   GError *error = NULL;
   gchar *message;
   gint x, y, dx, dy;
@@ -57,54 +57,30 @@ ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
     return failure (procedure, GIMP_PDB_CALLING_ERROR,
                     g_strdup (_("The layer has no alpha channel: there is no transparency to heal.")));
 
+  /* Uncrop: the layer with a transparent border of `percent` of the
+   * image's sides, healed before GIMP is touched. */
   dx = uncrop ? MAX (1, gimp_image_get_width (image) * args.percent / 100) : 0;
   dy = uncrop ? MAX (1, gimp_image_get_height (image) * args.percent / 100) : 0;
-  rect = (GeglRectangle) { 0, 0, gimp_drawable_get_width (drawable),
-                           gimp_drawable_get_height (drawable) };
-  format = gimp_drawable_get_format (drawable);
-  if (uncrop && !babl_format_has_alpha (format))
-    format = babl_format_with_space (gimp_drawable_is_gray (drawable) ? "Y'A float"
-                                                                       : "R'G'B'A float", format);
-  buffer = gimp_drawable_get_buffer (drawable);
-  if (uncrop)
+  gimp_drawable_get_offsets (drawable, &x, &y);
+  layer = (TsHealLayer) {
+    .buffer = gimp_drawable_get_buffer (drawable),
+    .format = gimp_drawable_get_format (drawable),
+    .width = gimp_drawable_get_width (drawable), .height = gimp_drawable_get_height (drawable),
+    .is_gray = gimp_drawable_is_gray (drawable),
+    .selection = selection ? gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)))
+                           : NULL,
+    .offset_x = x, .offset_y = y, .border_x = dx, .border_y = dy,
+  };
+  ok = ts_plugin_heal_layer (&layer, &args, &result, &error);
+  g_object_unref (layer.buffer);
+  g_clear_object (&layer.selection);
+  if (!ok)
     {
-      GeglRectangle larger = { 0, 0, rect.width + 2 * dx, rect.height + 2 * dy };
-      GeglRectangle layer = { dx, dy, rect.width, rect.height };
-      pixels = gegl_buffer_new (&larger, format);
-      if (pixels && !ts_plugin_transfer (buffer, &rect, pixels, dx, dy, format))
-        g_clear_object (&pixels);
-      /* The hole is the new border only: transparency the layer already
-       * had is the user's and stays. */
-      mask = ts_plugin_border_mask (larger.width, larger.height, &layer);
-    }
-  else
-    pixels = ts_plugin_copy_buffer (buffer, &rect, format);
-  g_object_unref (buffer);
-  if (pixels && selection)
-    {
-      /* The selection over the layer, wherever the layer lies. */
-      GeglBuffer *channel = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)));
-      GeglRectangle over;
-      gimp_drawable_get_offsets (drawable, &x, &y);
-      over = (GeglRectangle) { x, y, rect.width, rect.height };
-      mask = ts_plugin_copy_buffer (channel, &over, babl_format ("Y' float"));
-      g_object_unref (channel);
-    }
-  if (!pixels || ((selection || uncrop) && !mask))
-    {
-      g_clear_object (&pixels);
-      g_clear_object (&mask);
-      return failure (procedure, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Out of memory.")));
-    }
-  gimp_progress_init (_("Healing"));
-  if (!ts_plugin_heal (pixels, mask, &args, &result, &error))
-    {
-      g_clear_object (&pixels);
-      g_clear_object (&mask);
       message = g_strdup (error->message);
       g_error_free (error);
       return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
     }
+  rect = (GeglRectangle) { 0, 0, layer.width, layer.height };
 
   /* Only now is the image changed, as one undo step. */
   gimp_image_undo_group_start (image);
@@ -128,8 +104,6 @@ ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
     }
   gimp_image_undo_group_end (image);
   g_object_unref (result);
-  g_object_unref (pixels);
-  g_clear_object (&mask);
   if (!ok)
     return failure (procedure, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Out of memory.")));
   if (mode == GIMP_RUN_INTERACTIVE)

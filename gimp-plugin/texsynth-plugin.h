@@ -221,6 +221,27 @@ gboolean ts_plugin_heal     (GeglBuffer        *pixels,
                              GeglBuffer       **result,
                              GError           **error);
 
+/* What a heal procedure reads of GIMP: the layer, and the selection over
+ * it (heal selection) or the width of the new border (uncrop). */
+typedef struct
+{
+  GeglBuffer *buffer;               /* the drawable's pixels              */
+  const Babl *format;               /* the drawable's format              */
+  gint        width, height;
+  gboolean    is_gray;
+  GeglBuffer *selection;            /* the selection channel, or NULL     */
+  gint        offset_x, offset_y;   /* the layer's place in the image     */
+  gint        border_x, border_y;   /* uncrop: the new border; else 0     */
+} TsHealLayer;
+
+/* Heals a private copy of the layer (enlarged by the border for uncrop,
+ * with an alpha channel then) through ts_plugin_heal; GIMP is not
+ * touched. The result has the copy's size and format. */
+gboolean ts_plugin_heal_layer (const TsHealLayer *layer,
+                               const TsHealArgs  *args,
+                               GeglBuffer       **result,
+                               GError           **error);
+
 #define TS_PLUGIN_ERROR ts_plugin_error_quark ()
 GQuark ts_plugin_error_quark (void);
 

@@ -1,0 +1,69 @@
+/* The heal procedures' work between reading GIMP and writing it back,
+ * which GIMP 2.10 and GIMP 3 share: a private copy of the layer (with a
+ * transparent border for uncrop), the hole's mask, and texsynth:heal.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <glib/gi18n-lib.h>
+
+#include "texsynth-plugin.h"
+
+/* The layer's pixels at (0, 0), `border_x`, `border_y` further in for
+ * uncrop, in `format`; NULL if out of memory. */
+static GeglBuffer *
+copy_layer (const TsHealLayer *layer, const Babl *format)
+{
+  GeglRectangle rect = { 0, 0, layer->width, layer->height };
+  GeglRectangle larger = { 0, 0, layer->width + 2 * layer->border_x,
+                           layer->height + 2 * layer->border_y };
+  GeglBuffer *pixels;
+
+  if (layer->border_x == 0 && layer->border_y == 0)
+    return ts_plugin_copy_buffer (layer->buffer, &rect, format);
+  pixels = gegl_buffer_new (&larger, format);
+  if (pixels && !ts_plugin_transfer (layer->buffer, &rect, pixels, layer->border_x,
+                                     layer->border_y, format))
+    g_clear_object (&pixels);
+  return pixels;
+}
+
+gboolean
+ts_plugin_heal_layer (const TsHealLayer *layer,
+                      const TsHealArgs  *args,
+                      GeglBuffer       **result,
+                      GError           **error)
+{
+  gboolean uncrop = layer->border_x > 0 || layer->border_y > 0;
+  const Babl *format = layer->format;
+  GeglBuffer *pixels, *mask = NULL;
+  gboolean healed;
+
+  /* Uncrop's border starts transparent, so the layer needs an alpha. */
+  if (uncrop && !babl_format_has_alpha (format))
+    format = babl_format_with_space (layer->is_gray ? "Y'A float" : "R'G'B'A float", format);
+  pixels = copy_layer (layer, format);
+  if (pixels && uncrop)
+    {
+      /* The hole is the new border only: transparency the layer already
+       * had is the user's and stays. */
+      GeglRectangle inner = { layer->border_x, layer->border_y, layer->width, layer->height };
+      mask = ts_plugin_border_mask (layer->width + 2 * layer->border_x,
+                                    layer->height + 2 * layer->border_y, &inner);
+    }
+  else if (pixels && layer->selection)
+    {
+      /* The selection over the layer, wherever the layer lies. */
+      GeglRectangle over = { layer->offset_x, layer->offset_y, layer->width, layer->height };
+      mask = ts_plugin_copy_buffer (layer->selection, &over, babl_format ("Y' float"));
+    }
+  if (!pixels || ((uncrop || layer->selection) && !mask))
+    {
+      g_clear_object (&pixels);
+      g_set_error (error, TS_PLUGIN_ERROR, 0, "%s", _("Out of memory."));
+      return FALSE;
+    }
+  gimp_progress_init (_("Healing"));
+  healed = ts_plugin_heal (pixels, mask, args, result, error);
+  g_object_unref (pixels);
+  g_clear_object (&mask);
+  return healed;
+}
