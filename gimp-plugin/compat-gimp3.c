@@ -379,8 +379,10 @@ add_quality_and_seed (GimpProcedure *procedure)
                                    ts_arg_tooltip ("seed"), 0, G_MAXINT, 0, G_PARAM_READWRITE);
 }
 
+/* The arguments and return value of the procedures that make a new
+ * image (render and render-layers). */
 static void
-add_size_and_tileable (GimpProcedure *procedure)
+add_render_arguments (GimpProcedure *procedure, const gchar *new_image_blurb)
 {
   gimp_procedure_add_int_argument (procedure, "width", ts_arg_label ("width"),
                                    ts_arg_tooltip ("width"), 1, TS_PLUGIN_MAX_SIDE, 512,
@@ -390,6 +392,12 @@ add_size_and_tileable (GimpProcedure *procedure)
                                    G_PARAM_READWRITE);
   gimp_procedure_add_boolean_argument (procedure, "tileable", ts_arg_label ("tileable"),
                                        ts_arg_tooltip ("tileable"), FALSE, G_PARAM_READWRITE);
+  add_quality_and_seed (procedure);
+  gimp_procedure_add_boolean_aux_argument (procedure, "size-chosen", "Size chosen",
+                                           "Whether the user has chosen a size once",
+                                           FALSE, G_PARAM_READWRITE);
+  gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
+                                         new_image_blurb, FALSE, G_PARAM_READWRITE);
 }
 
 static void
@@ -418,14 +426,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                   "(or its selected part) everywhere, with the texsynth:synthesize GEGL "
                   "operation, in a new image of the same precision and colour profile."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
-      add_size_and_tileable (procedure);
-      add_quality_and_seed (procedure);
-      gimp_procedure_add_boolean_aux_argument (procedure, "size-chosen", "Size chosen",
-                                               "Whether the user has chosen a size once",
-                                               FALSE, G_PARAM_READWRITE);
-      gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
-                                             _("The image with the synthesised texture"),
-                                             FALSE, G_PARAM_READWRITE);
+      add_render_arguments (procedure, _("The image with the synthesised texture"));
     }
   else if (g_str_equal (name, TS_PROC_RENDER_LAYERS))
     {
@@ -441,14 +442,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                   "size; the new image has the same layers, names and order, precision and "
                   "colour profile."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
-      add_size_and_tileable (procedure);
-      add_quality_and_seed (procedure);
-      gimp_procedure_add_boolean_aux_argument (procedure, "size-chosen", "Size chosen",
-                                               "Whether the user has chosen a size once",
-                                               FALSE, G_PARAM_READWRITE);
-      gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
-                                             _("The image with the synthesised layers"),
-                                             FALSE, G_PARAM_READWRITE);
+      add_render_arguments (procedure, _("The image with the synthesised layers"));
     }
   else if (g_str_equal (name, TS_PROC_TILEABLE))
     {
