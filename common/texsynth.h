@@ -239,6 +239,9 @@ typedef struct
   int      max_iterations;     /* 0 = automatic; else 1 .. 100 per level   */
   bool     histogram_matching; /* Kopf et al.'s re-weighting of votes      */
   size_t   memory_limit;       /* bytes; 0 = default, as TsParams          */
+  bool     record_sources;     /* counts the source volume (4 bytes per
+                                  voxel) in the estimate; required by
+                                  ts_synthesize_solid_with_sources       */
 } TsSolidParams;
 
 /* Defaults: 128^3, periodic, default quality, histogram matching. */
@@ -263,6 +266,57 @@ TsStatus ts_synthesize_solid (const TsSolidParams *params,
                               TsProgressFunc progress,
                               void *user_data,
                               TsError *error);
+
+/* Every voxel of a synthesised volume is a copy of one pixel of one
+ * orientation's exemplar. Its source packs the orientation a (the axis
+ * the exemplar's slices are cut across, TsAxis) in the top two bits and
+ * the pixel's index y * width + x in exemplars[a] below: exemplars have
+ * at most TS_MAX_OUTPUT_SIDE^2 = 2^28 pixels. */
+typedef uint32_t TsSolidSource;
+#define TS_SOLID_SOURCE_AXIS_SHIFT 30
+#define TS_SOLID_SOURCE_INDEX_MASK ((1u << TS_SOLID_SOURCE_AXIS_SHIFT) - 1u)
+
+static inline TsSolidSource
+ts_solid_source_pack (int axis, uint32_t index)
+{
+  return (TsSolidSource) axis << TS_SOLID_SOURCE_AXIS_SHIFT | index;
+}
+
+static inline int
+ts_solid_source_axis (TsSolidSource source)
+{
+  return (int) (source >> TS_SOLID_SOURCE_AXIS_SHIFT);
+}
+
+static inline uint32_t
+ts_solid_source_index (TsSolidSource source)
+{
+  return source & TS_SOLID_SOURCE_INDEX_MASK;
+}
+
+/* ts_synthesize_solid that also fills `sources` (size^3, caller's, x
+ * fastest) with every voxel's source; params->record_sources must be set.
+ * Applying the sources to the exemplars (ts_solid_apply_sources on their
+ * pixels) gives the volume bit for bit, but where an exemplar pixel is
+ * translucent: the volume's alpha went through the working scale (x 100,
+ * / 100) and may differ by 1 ulp (never in 8 bits). */
+TsStatus ts_synthesize_solid_with_sources (const TsSolidParams *params,
+                                           const TsImage *const exemplars[3],
+                                           float *volume,
+                                           TsSolidSource *sources,
+                                           TsProgressFunc progress,
+                                           void *user_data,
+                                           TsError *error);
+
+/* Lays out maps with a volume's sources: voxel p becomes pixel
+ * index(sources[p]) of maps[axis(sources[p])], `pixel_bytes` bytes each,
+ * into `out` (voxels * pixel_bytes). maps[a] holds map_pixels[a] pixels
+ * (the exemplar a's count); the same map may serve several orientations.
+ * Fails, writing nothing, if a source names a missing map or a pixel
+ * beyond its map. */
+TsStatus ts_solid_apply_sources (const TsSolidSource *sources, size_t voxels,
+                                 const void *const maps[3], const size_t map_pixels[3],
+                                 size_t pixel_bytes, void *out, TsError *error);
 
 /* --- Image completion: filling a hole from the rest (common/completion/) -
  * Coarse to fine: the hole starts filled from its border inwards, then

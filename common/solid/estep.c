@@ -145,6 +145,10 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
           for (int a = 0; a < TS_SOLID_AXES; a++)
             if (level->source[a] && v.axis_source[a] >= 0)
               level->source[a][p] = v.axis_source[a];
+          /* Also when the colour is unchanged: an equal colour may come
+           * from another pixel, and aligned maps need the true one. */
+          if (level->chosen)
+            level->chosen[p] = ts_solid_source_pack (v.axis, (uint32_t) v.source);
           chosen = level->view[v.axis].exemplar->pixels + (size_t) v.source * TS_CHANNELS;
           if (memcmp (value, chosen, TS_CHANNELS * sizeof (float)) == 0)
             continue;

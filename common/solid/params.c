@@ -100,6 +100,8 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
    * and the batch map; plus the coarser level's values and sources. */
   bytes += n3 * (16.0 + 12.0 + 3.0 * 8.0 / 4.0 + 1.0);
   bytes += n3 / 8.0 * (16.0 + 12.0);
+  if (params->record_sources)
+    bytes += n3 * sizeof (TsSolidSource);
   return bytes + 16.0 * 1024 * 1024;
 }
 

@@ -35,6 +35,8 @@ typedef struct
   float       *value;      /* n^3 voxels, working format (alpha scaled) */
   int32_t     *source[TS_SOLID_AXES]; /* exemplar index per voxel and
                                           orientation; NULL where free */
+  TsSolidSource *chosen;   /* finest level, if asked: the vote each value
+                              copies (orientation and index); else NULL */
   TsSolidView  view[TS_SOLID_AXES];
 } TsSolidLevel;
 
@@ -116,7 +118,7 @@ void ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level);
 /* Voxels whose `batch_of` entry equals `batch` become the vote of the
  * best-matched slice neighbourhood covering them (robust weight, lowered
  * by the histogram excess); each orientation's source follows its own
- * best vote. With `histogram`, changes are
+ * best vote, and `chosen` (if any) records the vote. With `histogram`, changes are
  * added to `delta`. Returns the number of voxels whose value changed. */
 size_t ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
                        TsSolidMatch *const matches[TS_SOLID_AXES], const uint8_t *batch_of,

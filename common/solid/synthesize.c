@@ -51,6 +51,7 @@ typedef struct
                                        coarser ones only seed MRPM        */
   TsSolidLevel         level, coarser;
   float               *volume;                     /* the caller's: finest values */
+  TsSolidSource       *sources;                    /* the caller's, or NULL */
 } Run;
 
 static bool
@@ -270,6 +271,7 @@ level_alloc (Run *run, size_t level)
   l->n = n;
   l->periodic = run->params->periodic;
   l->value = level == 0 ? run->volume : malloc (voxels * TS_CHANNELS * sizeof (float));
+  l->chosen = level == 0 ? run->sources : NULL;
   if (!l->value)
     return TS_ERROR_OUT_OF_MEMORY;
   for (int a = 0; a < TS_SOLID_AXES; a++)
@@ -314,6 +316,8 @@ value_from_sources (TsSolidLevel *l, size_t p)
         }
     }
   memcpy (l->value + p * TS_CHANNELS, colour[chosen], TS_CHANNELS * sizeof (float));
+  if (l->chosen)
+    l->chosen[p] = ts_solid_source_pack (chosen, (uint32_t) l->source[chosen][p]);
 }
 
 /* Opaque source at exemplar (sx, sy), mirrored inside; a random opaque
@@ -563,17 +567,21 @@ synthesize_level (Run *run, size_t level)
 }
 
 TsStatus
-ts_synthesize_solid (const TsSolidParams *params, const TsImage *const exemplars[3], float *volume,
-                     TsProgressFunc progress, void *user_data, TsError *error)
+ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *const exemplars[3],
+                                  float *volume, TsSolidSource *sources, TsProgressFunc progress,
+                                  void *user_data, TsError *error)
 {
   Run run;
   TsStatus status = ts_solid_params_validate (params, exemplars, error);
 
   if (status != TS_OK)
     return status;
-  if (!volume)
-    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no volume to write into");
+  if (!volume || !sources != !params->record_sources)
+    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT,
+                    !volume ? "no volume to write into"
+                            : "sources are written only with record_sources set, and then needed");
   memset (&run, 0, sizeof run);
+  run.sources = sources;
   run.params = params;
   run.progress = progress;
   run.user_data = user_data;
