@@ -14,6 +14,11 @@
  * are never created. Every file appears complete or not at all, and a
  * set of slices all at once; on any failure older files stay as they
  * were and a warning "texsynth:volume-save: <message>" says why.
+ *
+ * With a map on "aux3" (an image aligned with the exemplar) the files
+ * hold the map laid out with the volume's sources instead of its colours;
+ * content=source writes the sources themselves (see volume-map.h) as an
+ * R16G16B16A16_UINT .dds volume.
  */
 #include <glib/gi18n-lib.h>
 
@@ -28,6 +33,11 @@ enum_start (texsynth_volume_save_format)
   enum_value (TEXSYNTH_VOLUME_SAVE_FORMAT_ATLAS, "atlas", N_("Atlas PNG"))
   enum_value (TEXSYNTH_VOLUME_SAVE_FORMAT_PNG_SLICES, "png-slices", N_("One PNG per slice"))
 enum_end (TexsynthVolumeSaveFormat)
+
+enum_start (texsynth_volume_save_content)
+  enum_value (TEXSYNTH_VOLUME_SAVE_CONTENT_COLOUR, "colour", N_("Colours (or the map)"))
+  enum_value (TEXSYNTH_VOLUME_SAVE_CONTENT_SOURCE, "source", N_("Sources: exemplar x, y and orientation"))
+enum_end (TexsynthVolumeSaveContent)
 
 enum_start (texsynth_volume_save_axis)
   enum_value (TEXSYNTH_VOLUME_SAVE_AXIS_X, "x", N_("X"))
@@ -49,6 +59,12 @@ property_file_path (path, _("File"), "")
 property_enum (format, _("Format"), TexsynthVolumeSaveFormat, texsynth_volume_save_format,
                TEXSYNTH_VOLUME_SAVE_FORMAT_AUTO)
   description (_("File format; 'auto' chooses it from the path"))
+
+property_enum (content, _("Content"), TexsynthVolumeSaveContent, texsynth_volume_save_content,
+               TEXSYNTH_VOLUME_SAVE_CONTENT_COLOUR)
+  description (_("What the voxels hold: the colours (or, with a map connected, the map laid "
+                 "out the same way), or for each voxel the exemplar pixel it copies, as a "
+                 ".dds volume of 16-bit x, y, orientation (0-2), 65535"))
 
 property_enum (axis, _("Axis"), TexsynthVolumeSaveAxis, texsynth_volume_save_axis,
                TEXSYNTH_VOLUME_SAVE_AXIS_Z)
@@ -80,6 +96,7 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSaveFreeAxis,
 #include "volume/volume.h"
 #include "volume/layout.h"
 #include "volume-png.h"
+#include "volume-map.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -197,6 +214,15 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
   return TRUE;
 }
 
+static gboolean
+all_opaque (const guint8 *rgba, size_t size)
+{
+  for (size_t i = 0; i < size * size * size; i++)
+    if (rgba[i * 4 + 3] != 255)
+      return FALSE;
+  return TRUE;
+}
+
 /* The volume as R'G'B'A u8 voxels (g_free it); *opaque if every voxel is. */
 static guint8 *
 to_rgba8 (const TsVolumeEntry *entry, gboolean *opaque, TsError *error)
@@ -216,10 +242,27 @@ to_rgba8 (const TsVolumeEntry *entry, gboolean *opaque, TsError *error)
     }
   for (size_t z = 0; z < size; z++)
     babl_process (fish, voxels + z * plane * TS_CHANNELS, rgba + z * plane * 4, (long) plane);
-  *opaque = TRUE;
-  for (size_t i = 0; i < plane * size && *opaque; i++)
-    *opaque = rgba[i * 4 + 3] == 255;
+  *opaque = all_opaque (rgba, size);
   return rgba;
+}
+
+/* Refuse, before any synthesis, what cannot be written. */
+static gboolean
+check_content (GeglOperation *operation, GeglProperties *o, const Target *target,
+               TsError *error)
+{
+  if (o->content == TEXSYNTH_VOLUME_SAVE_CONTENT_SOURCE)
+    {
+      if (ts_volume_map_connected (operation))
+        return set_error (error, _("content=source writes the sources, not a map: disconnect "
+                                   "the map or set content=colour"));
+      if (target->format != TEXSYNTH_VOLUME_SAVE_FORMAT_DDS)
+        return set_error (error, _("content=source is written as a .dds volume only "
+                                   "(16-bit x, y, orientation): end the path with .dds"));
+      return TRUE;
+    }
+  return !ts_volume_map_connected (operation) ||
+         ts_volume_map_check (operation, o->free_axis, error);
 }
 
 static gboolean
@@ -311,13 +354,27 @@ save (GeglOperation *operation, GeglBuffer *input, GeglBuffer *aux, GeglBuffer *
   gboolean opaque = TRUE, ok;
 
   TS_VOLUME_OP_FILL_PARAMS (o, &params);
-  ok = resolve_target (o, &target, &error);
+  ok = resolve_target (o, &target, &error) && check_content (operation, o, &target, &error);
   if (ok)
+    entry = ts_volume_op_acquire (operation, input, aux, aux2, &params, o->free_axis, &error);
+  if (entry && o->content == TEXSYNTH_VOLUME_SAVE_CONTENT_SOURCE)
     {
-      entry = ts_volume_op_acquire (operation, input, aux, aux2, &params, o->free_axis, &error);
-      ok = entry && (rgba = to_rgba8 (entry, &opaque, &error));
+      guint16 *xy = ts_volume_sources_xy (operation, entry, &error);
+      ok = xy && ts_volume_write_dds_sources (target.path, ts_volume_entry_size (entry), xy,
+                                              &error) == TS_OK;
+      g_free (xy);
+      ts_volume_cache_release (entry);
+      entry = NULL;
     }
-  if (ok)
+  else if (entry && ts_volume_map_connected (operation))
+    {
+      ok = (rgba = ts_volume_map_lay_out (operation, entry, babl_format (RGBA_FORMAT), &error))
+           != NULL;
+      opaque = ok && all_opaque (rgba, ts_volume_entry_size (entry));
+    }
+  else
+    ok = entry && (rgba = to_rgba8 (entry, &opaque, &error));
+  if (ok && rgba)
     {
       size_t size = ts_volume_entry_size (entry);
       ts_volume_cache_release (entry);  /* the 8-bit copy is enough now */
@@ -396,6 +453,7 @@ attach (GeglOperation *operation)
                  _("Exemplar of the slices across x (default: the input)"));
   add_input_pad (operation, "aux2", _("Y exemplar"),
                  _("Exemplar of the slices across y (default: the input)"));
+  ts_volume_map_add_pad (operation);
 }
 
 static void

@@ -9,6 +9,11 @@
  * layouts of the same volume, and texsynth:volume-save with the same
  * settings, do not synthesise it again. Failures give a warning
  * "texsynth:volume-slice: <message>" and a transparent result.
+ *
+ * With a map on "aux3" (an image aligned with the exemplar, see
+ * volume-map.h) the op shows the map laid out with the volume's sources
+ * instead of its colours, in R'G'B'A float so that the map's own values
+ * pass unchanged.
  */
 #include <glib/gi18n-lib.h>
 
@@ -74,10 +79,12 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSliceFreeAxis,
 #pragma GCC diagnostic pop
 
 #include "volume/layout.h"
+#include "volume-map.h"
 
 #include <stdio.h>
 
 #define VOXEL_BYTES (TS_CHANNELS * sizeof (float))
+#define MAP_FORMAT "R'G'B'A float"
 
 static GeglRectangle
 get_bounding_box (GeglOperation *operation)
@@ -99,7 +106,17 @@ static void
 prepare (GeglOperation *operation)
 {
   ts_volume_op_prepare_inputs (operation);
-  gegl_operation_set_format (operation, "output", babl_format (TS_OP_FORMAT));
+  gegl_operation_set_format (operation, TS_VOLUME_MAP_PAD, babl_format (MAP_FORMAT));
+  gegl_operation_set_format (operation, "output",
+                             babl_format (ts_volume_map_connected (operation) ? MAP_FORMAT
+                                                                             : TS_OP_FORMAT));
+}
+
+static void
+attach (GeglOperation *operation)
+{
+  GEGL_OPERATION_CLASS (gegl_op_parent_class)->attach (operation);
+  ts_volume_map_add_pad (operation);
 }
 
 static GeglRectangle
@@ -147,14 +164,14 @@ slice_index (GeglProperties *o, size_t *index, TsError *error)
   return FALSE;
 }
 
-/* Write the slices of `entry` that `roi` shows: one slice, or every cell
- * of the atlas (unused cells stay transparent). One slice at a time, so
- * no atlas-sized copy is needed. */
+/* Write the slices of `voxels` (VOXEL_BYTES each, in `format`) that
+ * `roi` shows: one slice, or every cell of the atlas (unused cells stay
+ * transparent). One slice at a time, so no atlas-sized copy is needed. */
 static gboolean
-write_slices (GeglProperties *o, const TsVolumeEntry *entry, size_t index,
-              GeglBuffer *output, const GeglRectangle *roi, TsError *error)
+write_slices (GeglProperties *o, const float *voxels, size_t size, const Babl *format,
+              size_t index, GeglBuffer *output, const GeglRectangle *roi, TsError *error)
 {
-  size_t size = ts_volume_entry_size (entry), columns = 1, rows = 1, slices = 1;
+  size_t columns = 1, rows = 1, slices = 1;
   TsImage slice = { size, size, NULL };
 
   if (o->layout == TEXSYNTH_VOLUME_SLICE_LAYOUT_ATLAS)
@@ -178,9 +195,13 @@ write_slices (GeglProperties *o, const TsVolumeEntry *entry, size_t index,
                              (gint) size, (gint) size };
       if (!gegl_rectangle_intersect (NULL, &cell, roi))
         continue;
-      ts_volume_extract_slice (ts_volume_entry_voxels (entry), size, VOXEL_BYTES, o->axis,
-                               index + i, slice.pixels);
-      ts_op_write_output (output, roi, &slice, cell.x, cell.y);
+      GeglRectangle shown;
+      ts_volume_extract_slice (voxels, size, VOXEL_BYTES, o->axis, index + i, slice.pixels);
+      gegl_rectangle_intersect (&shown, &cell, roi);
+      gegl_buffer_set (output, &shown, 0, format,
+                       slice.pixels + ((size_t) (shown.y - cell.y) * size
+                                       + (size_t) (shown.x - cell.x)) * TS_CHANNELS,
+                       (gint) (size * VOXEL_BYTES));
     }
   g_free (slice.pixels);
   return TRUE;
@@ -202,13 +223,22 @@ process (GeglOperation       *operation,
   size_t index = 0;
   gboolean ok;
 
+  gboolean map = ts_volume_map_connected (operation);
+  float *laid = NULL;
+
   TS_VOLUME_OP_FILL_PARAMS (o, &params);
-  ok = o->layout == TEXSYNTH_VOLUME_SLICE_LAYOUT_ATLAS || slice_index (o, &index, &error);
+  ok = (o->layout == TEXSYNTH_VOLUME_SLICE_LAYOUT_ATLAS || slice_index (o, &index, &error)) &&
+       (!map || ts_volume_map_check (operation, o->free_axis, &error));
   if (ok)
-    {
-      entry = ts_volume_op_acquire (operation, input, aux, aux2, &params, o->free_axis, &error);
-      ok = entry && write_slices (o, entry, index, output, roi, &error);
-    }
+    entry = ts_volume_op_acquire (operation, input, aux, aux2, &params, o->free_axis, &error);
+  if (entry && map)
+    ok = (laid = ts_volume_map_lay_out (operation, entry, babl_format (MAP_FORMAT), &error))
+         && write_slices (o, laid, ts_volume_entry_size (entry), babl_format (MAP_FORMAT), index,
+                          output, roi, &error);
+  else
+    ok = entry && write_slices (o, ts_volume_entry_voxels (entry), ts_volume_entry_size (entry),
+                                babl_format (TS_OP_FORMAT), index, output, roi, &error);
+  g_free (laid);
   ts_volume_cache_release (entry);
 
   /* As the other ops: a defined (transparent) result and TRUE, so that a
@@ -225,6 +255,7 @@ gegl_op_class_init (GeglOpClass *klass)
   GeglOperationClass          *operation_class = GEGL_OPERATION_CLASS (klass);
   GeglOperationComposer3Class *composer_class  = GEGL_OPERATION_COMPOSER3_CLASS (klass);
 
+  operation_class->attach                    = attach;
   operation_class->prepare                   = prepare;
   operation_class->get_bounding_box          = get_bounding_box;
   operation_class->get_required_for_output   = get_required_for_output;

@@ -32,6 +32,9 @@ TsVolumeEntry *ts_volume_cache_acquire (const TsSolidParams *params,
 
 /* The held volume: size^3 voxels of TS_CHANNELS floats, read-only. */
 const float *ts_volume_entry_voxels (const TsVolumeEntry *entry);
+/* Every voxel's source (see ts_synthesize_solid_with_sources), read-only:
+ * cached volumes always have them. */
+const TsSolidSource *ts_volume_entry_sources (const TsVolumeEntry *entry);
 size_t       ts_volume_entry_size   (const TsVolumeEntry *entry);
 
 /* Let go of an entry from ts_volume_cache_acquire (NULL is ignored). */

@@ -576,10 +576,11 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
 
   if (status != TS_OK)
     return status;
-  if (!volume || !sources != !params->record_sources)
+  if (!volume)
+    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no volume to write into");
+  if (!sources != !params->record_sources)
     return ts_fail (error, TS_ERROR_INVALID_ARGUMENT,
-                    !volume ? "no volume to write into"
-                            : "sources are written only with record_sources set, and then needed");
+                    "sources are written exactly when record_sources is set");
   memset (&run, 0, sizeof run);
   run.sources = sources;
   run.params = params;

@@ -1,4 +1,5 @@
-/* Uncompressed DDS volume textures, 8 bits per channel.
+/* Uncompressed DDS volume textures, 8 bits per channel (and solid
+ * texture sources as R16G16B16A16_UINT, written only).
  * SPDX-License-Identifier: LGPL-3.0-or-later
  *
  * Written as "DDS ", a DDS_HEADER (124 bytes) and a DDS_HEADER_DXT10
@@ -74,7 +75,8 @@ typedef struct
 } ChannelOrder;
 
 static void
-fill_header (uint8_t header[TS_DDS_DATA_OFFSET], uint32_t size)
+fill_header (uint8_t header[TS_DDS_DATA_OFFSET], uint32_t size, uint32_t dxgi_format,
+             uint32_t voxel_bytes)
 {
   memset (header, 0, TS_DDS_DATA_OFFSET);
   memcpy (header, "DDS ", 4);
@@ -83,7 +85,7 @@ fill_header (uint8_t header[TS_DDS_DATA_OFFSET], uint32_t size)
                                    | DDSD_PIXELFORMAT | DDSD_DEPTH);
   ts_put_le32 (header + DDS_HEIGHT, size);
   ts_put_le32 (header + DDS_WIDTH, size);
-  ts_put_le32 (header + DDS_PITCH, size * 4);
+  ts_put_le32 (header + DDS_PITCH, size * voxel_bytes);
   ts_put_le32 (header + DDS_DEPTH, size);
   ts_put_le32 (header + DDS_MIPMAP_COUNT, 1);
   ts_put_le32 (header + DDS_PF_SIZE, 32);
@@ -91,7 +93,7 @@ fill_header (uint8_t header[TS_DDS_DATA_OFFSET], uint32_t size)
   memcpy (header + DDS_PF_FOURCC, "DX10", 4);
   ts_put_le32 (header + DDS_CAPS, DDSCAPS_COMPLEX | DDSCAPS_TEXTURE);
   ts_put_le32 (header + DDS_CAPS2, DDSCAPS2_VOLUME);
-  ts_put_le32 (header + DX10_FORMAT, TS_DXGI_FORMAT_R8G8B8A8_UNORM);
+  ts_put_le32 (header + DX10_FORMAT, dxgi_format);
   ts_put_le32 (header + DX10_DIMENSION, TS_DDS_DIMENSION_TEXTURE3D);
   ts_put_le32 (header + DX10_MISC_FLAG, 0);
   ts_put_le32 (header + DX10_ARRAY_SIZE, 1);
@@ -130,7 +132,7 @@ ts_volume_write_dds (const char *path, const TsVolume8 *v, TsError *error)
       if (!row)
         return ts_fail (error, TS_ERROR_OUT_OF_MEMORY, "out of memory writing '%s'", path);
     }
-  fill_header (header, (uint32_t) v->size);
+  fill_header (header, (uint32_t) v->size, TS_DXGI_FORMAT_R8G8B8A8_UNORM, 4);
 
   status = ts_atomic_open (&f, path, error);
   if (status == TS_OK)
@@ -141,6 +143,44 @@ ts_volume_write_dds (const char *path, const TsVolume8 *v, TsError *error)
     {
       expand_row (v->voxels + r * v->size * v->channels, v->channels, v->size, row);
       status = ts_atomic_write (&f, row, v->size * 4, error);
+    }
+  free (row);
+  if (status == TS_OK)
+    return ts_atomic_commit (&f, error);
+  if (f.temp_path)
+    ts_atomic_abort (&f);
+  return status;
+}
+
+TsStatus
+ts_volume_write_dds_sources (const char *path, size_t size, const uint16_t *voxels,
+                             TsError *error)
+{
+  uint8_t header[TS_DDS_DATA_OFFSET];
+  TsVolume8 as_bytes = { size, 4, false, (uint8_t *) voxels }; /* for the checks only */
+  TsAtomicFile f;
+  uint8_t *row;
+  TsStatus status = ts_volume_check_writable (&as_bytes, error);
+
+  if (status != TS_OK)
+    return status;
+  row = malloc (size * 8);
+  if (!row)
+    return ts_fail (error, TS_ERROR_OUT_OF_MEMORY, "out of memory writing '%s'", path);
+  fill_header (header, (uint32_t) size, TS_DXGI_FORMAT_R16G16B16A16_UINT, 8);
+  status = ts_atomic_open (&f, path, error);
+  if (status == TS_OK)
+    status = ts_atomic_write (&f, header, sizeof header, error);
+  for (size_t r = 0; status == TS_OK && r < size * size; r++)
+    {
+      /* Little-endian whatever the host. */
+      for (size_t i = 0; i < size * 4; i++)
+        {
+          uint16_t value = voxels[r * size * 4 + i];
+          row[2 * i] = (uint8_t) value;
+          row[2 * i + 1] = (uint8_t) (value >> 8);
+        }
+      status = ts_atomic_write (&f, row, size * 8, error);
     }
   free (row);
   if (status == TS_OK)

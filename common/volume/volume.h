@@ -33,6 +33,7 @@
 #define TS_DDS_DATA_OFFSET (4 + TS_DDS_HEADER_SIZE + TS_DDS_DX10_HEADER_SIZE)
 #define TS_DDS_LEGACY_DATA_OFFSET (4 + TS_DDS_HEADER_SIZE)
 #define TS_DXGI_FORMAT_R8G8B8A8_UNORM 28
+#define TS_DXGI_FORMAT_R16G16B16A16_UINT 12
 #define TS_DDS_DIMENSION_TEXTURE3D 4
 
 typedef struct
@@ -61,6 +62,16 @@ TsStatus ts_volume_write_vol (const char      *path,
 TsStatus ts_volume_write_dds (const char      *path,
                               const TsVolume8 *v,
                               TsError         *error);
+
+/* Write a solid texture's sources as a DX10 DDS volume texture of
+ * R16G16B16A16_UINT voxels (148-byte header, then x fastest, 8 bytes per
+ * voxel, little-endian): `voxels` holds size^3 * 4 values, per voxel the
+ * exemplar pixel's x and y, the orientation (0, 1, 2: the exemplar of the
+ * slices across x, y, z) and 65535. Not readable by ts_volume_read. */
+TsStatus ts_volume_write_dds_sources (const char     *path,
+                                      size_t          size,
+                                      const uint16_t *voxels,
+                                      TsError        *error);
 
 /* Read a .vol or .dds volume, recognised by its magic bytes. `max_bytes`
  * caps the voxel memory (0: no cap beyond TS_VOLUME_MAX_SIZE). Allocates

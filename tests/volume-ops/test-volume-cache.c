@@ -14,6 +14,8 @@
 
 #define SIZE 8
 #define VOLUME_BYTES ((size_t) SIZE * SIZE * SIZE * TS_CHANNELS * sizeof (float))
+/* What the cache keeps per volume: the voxels and every voxel's source. */
+#define ENTRY_BYTES (VOLUME_BYTES + (size_t) SIZE * SIZE * SIZE * sizeof (TsSolidSource))
 #define THREADS 4
 
 typedef struct
@@ -104,7 +106,7 @@ main (void)
     return 1;
 
   Request r1 = request (&noise, 1), r2 = request (&noise, 2), r3 = request (&other, 1);
-  ts_volume_cache_set_limit (VOLUME_BYTES * 4);
+  ts_volume_cache_set_limit (ENTRY_BYTES * 4);
 
   /* Reuse: the same request is answered from the cache. */
   before = syntheses ();
@@ -121,6 +123,7 @@ main (void)
   CHECK (syntheses () == before + 3, "another seed or exemplar is synthesised anew");
   CHECK (a && b && c && memcmp (ts_volume_entry_voxels (a), ts_volume_entry_voxels (b),
                                 VOLUME_BYTES) != 0, "another seed gives another volume");
+  CHECK (a && ts_volume_entry_sources (a) != NULL, "cached volumes keep their sources");
   Request r1_free = r1;
   r1_free.exemplars[TS_AXIS_X] = NULL;
   ts_volume_cache_release (acquire (&r1_free));
@@ -131,7 +134,7 @@ main (void)
 
   /* LRU: with room for two, using r1 then r3 then r2 evicts r1. */
   ts_volume_cache_clear ();
-  ts_volume_cache_set_limit (VOLUME_BYTES * 2);
+  ts_volume_cache_set_limit (ENTRY_BYTES * 2);
   before = syntheses ();
   ts_volume_cache_release (acquire (&r1));
   ts_volume_cache_release (acquire (&r3));
@@ -144,14 +147,14 @@ main (void)
   CHECK (syntheses () == before + 4, "r3 was evicted");
 
   /* A volume larger than the limit serves its request and is dropped. */
-  ts_volume_cache_set_limit (VOLUME_BYTES - 1);
+  ts_volume_cache_set_limit (ENTRY_BYTES - 1);
   before = syntheses ();
   a = acquire (&r1);
   CHECK (a != NULL, "served although larger than the limit");
   ts_volume_cache_release (a);
   ts_volume_cache_release (acquire (&r1));
   CHECK (syntheses () == before + 2, "not kept: synthesised again");
-  ts_volume_cache_set_limit (VOLUME_BYTES * 4);
+  ts_volume_cache_set_limit (ENTRY_BYTES * 4);
 
   /* Failures give a message and are not kept. */
   {
