@@ -1,14 +1,17 @@
 /* solid-memory: peak memory of the solid engine alone, without GEGL (whose
  * start-up alone takes a few hundred MiB of RSS on Debian 12), for the
  * solid benchmark. Synthesises a SIZE^3 volume from a generated opaque
- * EXEMPLAR x EXEMPLAR noise image and prints the time and peak RSS.
- * Usage: solid-memory SIZE [EXEMPLAR_SIDE]
+ * EXEMPLAR x EXEMPLAR noise image and prints the time and peak RSS; with
+ * --sources also every voxel's source (ts_synthesize_solid_with_sources),
+ * which must reproduce the volume exactly.
+ * Usage: solid-memory [--sources] SIZE [EXEMPLAR_SIDE]
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "texsynth.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/resource.h>
 #include <time.h>
 
@@ -20,20 +23,29 @@ main (int argc, char **argv)
   TsError error;
   struct rusage usage;
   struct timespec t0, t1;
-  size_t side = argc > 2 ? (size_t) atol (argv[2]) : 128;
+  bool with_sources = argc > 1 && strcmp (argv[1], "--sources") == 0;
+  size_t side, voxels;
   float *volume;
+  TsSolidSource *sources = NULL;
 
+  if (with_sources)
+    argv++, argc--;
   if (argc < 2)
     {
-      fprintf (stderr, "usage: solid-memory SIZE [EXEMPLAR_SIDE]\n");
+      fprintf (stderr, "usage: solid-memory [--sources] SIZE [EXEMPLAR_SIDE]\n");
       return 2;
     }
+  side = argc > 2 ? (size_t) atol (argv[2]) : 128;
   ts_solid_params_init (&params);
   params.size = (size_t) atol (argv[1]);
+  params.record_sources = with_sources;
+  voxels = params.size * params.size * params.size;
   exemplar.width = exemplar.height = side;
   exemplar.pixels = malloc (side * side * TS_CHANNELS * sizeof (float));
-  volume = malloc (params.size * params.size * params.size * TS_CHANNELS * sizeof (float));
-  if (!exemplar.pixels || !volume)
+  volume = malloc (voxels * TS_CHANNELS * sizeof (float));
+  if (with_sources)
+    sources = malloc (voxels * sizeof (TsSolidSource));
+  if (!exemplar.pixels || !volume || (with_sources && !sources))
     {
       fprintf (stderr, "solid-memory: out of memory\n");
       return 1;
@@ -49,16 +61,40 @@ main (int argc, char **argv)
     }
   const TsImage *exemplars[3] = { &exemplar, &exemplar, &exemplar };
   clock_gettime (CLOCK_MONOTONIC, &t0);
-  if (ts_synthesize_solid (&params, exemplars, volume, NULL, NULL, &error) != TS_OK)
+  if (ts_synthesize_solid_with_sources (&params, exemplars, volume, sources, NULL, NULL, &error)
+      != TS_OK)
     {
       fprintf (stderr, "solid-memory: %s\n", error.message);
       return 1;
     }
   clock_gettime (CLOCK_MONOTONIC, &t1);
   getrusage (RUSAGE_SELF, &usage);
-  printf ("%zu^3 from %zux%zu: %.2f s, peak RSS %.1f MiB\n", params.size, side, side,
+  printf ("%zu^3 from %zux%zu%s: %.2f s, peak RSS %.1f MiB\n", params.size, side, side,
+          with_sources ? " with sources" : "",
           (double) (t1.tv_sec - t0.tv_sec) + (double) (t1.tv_nsec - t0.tv_nsec) * 1e-9,
           (double) usage.ru_maxrss / 1024.0);
+  if (with_sources)
+    {
+      /* The exemplar's pixels laid out by the sources: alpha is 1, so the
+       * volume must come back bit for bit. */
+      const void *maps[3] = { exemplar.pixels, exemplar.pixels, exemplar.pixels };
+      size_t counts[3] = { side * side, side * side, side * side }, differ = 0;
+      float *laid = malloc (voxels * TS_CHANNELS * sizeof (float));
+      if (!laid || ts_solid_apply_sources (sources, voxels, maps, counts,
+                                           TS_CHANNELS * sizeof (float), laid, &error) != TS_OK)
+        {
+          fprintf (stderr, "solid-memory: cannot apply the sources\n");
+          return 1;
+        }
+      for (size_t p = 0; p < voxels; p++)
+        differ += memcmp (laid + p * TS_CHANNELS, volume + p * TS_CHANNELS,
+                          TS_CHANNELS * sizeof (float)) != 0;
+      printf ("sources reproduce %zu of %zu voxels exactly\n", voxels - differ, voxels);
+      free (laid);
+      if (differ)
+        return 1;
+    }
+  free (sources);
   free (volume);
   free (exemplar.pixels);
   return 0;
