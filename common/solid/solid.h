@@ -89,6 +89,14 @@ TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *
                          size_t t_offset, uint32_t seed_stream, TsSolidMatch *matches,
                          TsCancel *cancel);
 
+/* Start values (start-values.c). The voxel's value (and, when recording,
+ * its chosen source): of its orientations' source colours, the one
+ * closest to their mean. */
+void    ts_solid_value_from_sources (TsSolidLevel *level, size_t p);
+/* Opaque source at exemplar (sx, sy), mirrored inside; a random opaque
+ * pixel (from `random`) where that is transparent. */
+int32_t ts_solid_opaque_source (const TsSolidView *view, size_t sx, size_t sy, uint64_t random);
+
 /* --- histogram matching --------------------------------------------------- */
 
 typedef struct

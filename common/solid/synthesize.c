@@ -280,62 +280,6 @@ level_alloc (Run *run, size_t level)
   return TS_OK;
 }
 
-/* The voxel's value: of its orientations' source colours, the one
- * closest to their mean (a sharp start that agrees with most of them). */
-static void
-value_from_sources (TsSolidLevel *l, size_t p)
-{
-  const float *colour[TS_SOLID_AXES];
-  float mean[TS_CHANNELS] = { 0, 0, 0, 0 }, best = INFINITY;
-  int count = 0, chosen = -1;
-
-  for (int a = 0; a < TS_SOLID_AXES; a++)
-    {
-      colour[a] = NULL;
-      if (!l->source[a])
-        continue;
-      colour[a] = l->view[a].exemplar->pixels + (size_t) l->source[a][p] * TS_CHANNELS;
-      for (int c = 0; c < TS_CHANNELS; c++)
-        mean[c] += colour[a][c];
-      count++;
-    }
-  for (int a = 0; a < TS_SOLID_AXES; a++)
-    {
-      float d = 0.0f;
-      if (!colour[a])
-        continue;
-      for (int c = 0; c < TS_CHANNELS; c++)
-        {
-          float e = colour[a][c] - mean[c] / (float) count;
-          d += e * e;
-        }
-      if (d < best)
-        {
-          best = d;
-          chosen = a;
-        }
-    }
-  memcpy (l->value + p * TS_CHANNELS, colour[chosen], TS_CHANNELS * sizeof (float));
-  if (l->chosen)
-    l->chosen[p] = ts_solid_source_pack (chosen, (uint32_t) l->source[chosen][p]);
-}
-
-/* Opaque source at exemplar (sx, sy), mirrored inside; a random opaque
- * pixel where that is transparent. */
-static int32_t
-opaque_source (const TsSolidView *view, size_t sx, size_t sy, uint64_t random)
-{
-  const TsImage *ex = view->exemplar;
-  size_t s;
-
-  sx = sx < ex->width ? sx : ex->width - 1 - (sx - ex->width) % ex->width;
-  sy = sy < ex->height ? sy : ex->height - 1 - (sy - ex->height) % ex->height;
-  s = sy * ex->width + sx;
-  if (ex->pixels[s * TS_CHANNELS + 3] > 0.0f)
-    return (int32_t) s;
-  return view->opaque[ts_random_below (random, view->opaque_count)];
-}
-
 /* Coarsest start: random exemplar blocks per orientation, whose votes
  * agree, rather than single random pixels. */
 static void
@@ -361,11 +305,11 @@ start_random_blocks (Run *run, size_t level, size_t block)
             uint64_t r = ts_random (seed, (uint32_t) level, 0, cell, 1 + (uint32_t) a);
             int32_t corner = view->opaque[ts_random_below (r, view->opaque_count)];
             size_t w = view->exemplar->width;
-            l->source[a][p] = opaque_source (view, (size_t) corner % w + xyz[u] % block,
-                                             (size_t) corner / w + xyz[v] % block,
-                                             ts_random (seed, (uint32_t) level, 0, p, 5));
+            l->source[a][p] = ts_solid_opaque_source (view, (size_t) corner % w + xyz[u] % block,
+                                                      (size_t) corner / w + xyz[v] % block,
+                                                      ts_random (seed, (uint32_t) level, 0, p, 5));
           }
-        value_from_sources (l, p);
+        ts_solid_value_from_sources (l, p);
       }
 }
 
@@ -391,11 +335,11 @@ start_from_coarser (Run *run, size_t level)
               continue;
             ts_solid_plane_axes (a, &u, &v);
             size_t cw = c->view[a].exemplar->width, s = (size_t) c->source[a][parent];
-            l->source[a][p] = opaque_source (&l->view[a], 2 * (s % cw) + (xyz[u] & 1),
-                                             2 * (s / cw) + (xyz[v] & 1),
-                                             ts_random (seed, (uint32_t) level, 0, p, 6));
+            l->source[a][p] = ts_solid_opaque_source (&l->view[a], 2 * (s % cw) + (xyz[u] & 1),
+                                                      2 * (s / cw) + (xyz[v] & 1),
+                                                      ts_random (seed, (uint32_t) level, 0, p, 6));
           }
-        value_from_sources (l, p);
+        ts_solid_value_from_sources (l, p);
       }
 }
 
