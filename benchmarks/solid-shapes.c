@@ -34,10 +34,10 @@ static void
 print_row (const char *name, const char *what, const SliceFigures *f)
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
-          "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f\n",
+          "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
-          f->axis_edges[3], f->worst_axis_edges, f->seam);
+          f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1], f->sharpness[2], f->sharpness[3]);
 }
 
 static void

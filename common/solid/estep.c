@@ -10,6 +10,13 @@
  * whole exemplar neighbourhoods together: neighbouring voxels covered by
  * the same well-matched neighbourhood copy its pixels.
  *
+ * Inertia: a vote for the voxel's current value weighs TS_SOLID_INERTIA
+ * times more. Winner-takes-all votes erode the structure a level starts
+ * from (well-matched flat neighbourhoods claim the voxels of edges, so
+ * spots merge and mortar thickens, iteration after iteration); with
+ * inertia, the sharp start from the coarser level's winners
+ * (start.c) survives unless a clearly better match replaces it.
+ *
  * Histogram matching: Kopf et al.'s weight 1 / (1 + excess) lowers the
  * votes of over-represented colours, so a near-tie goes to the colour the
  * volume lacks.
@@ -18,13 +25,17 @@
 
 #include <string.h>
 
+/* 128^3 cells' sharpness 0.89 -> 0.93 x the exemplar's with it. */
+#define TS_SOLID_INERTIA 1.5f
+
 typedef struct
 {
-  float   weight;
-  int32_t source;
-  int     axis;
-  float   axis_weight[TS_SOLID_AXES];
-  int32_t axis_source[TS_SOLID_AXES];
+  float        weight;
+  int32_t      source;
+  int          axis;
+  float        axis_weight[TS_SOLID_AXES];
+  int32_t      axis_source[TS_SOLID_AXES];
+  const float *current;   /* the voxel's value before this E-step */
 } Votes;
 
 /* Strictly heavier wins, so among equal weights the first vote in the
@@ -38,6 +49,8 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
     weight /= 1.0f + view->excess[source];
   if (value[3] <= 0.0f || !(weight > 0.0f))
     return;
+  if (memcmp (value, v->current, TS_CHANNELS * sizeof (float)) == 0)
+    weight *= TS_SOLID_INERTIA;
   if (weight > v->axis_weight[axis])
     {
       v->axis_weight[axis] = weight;
@@ -104,8 +117,10 @@ collect (Votes *v, const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxis
 /* New value and sources of voxel `p`; false if nothing voted for it. */
 static bool
 vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
-            TsSolidMatch *const matches[TS_SOLID_AXES], const size_t xyz[3], Votes *v)
+            TsSolidMatch *const matches[TS_SOLID_AXES], const size_t xyz[3], const float *current,
+            Votes *v)
 {
+  v->current = current;
   v->weight = 0.0f;
   v->source = -1;
   v->axis = 0;
@@ -140,7 +155,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
           float *value = level->value + p * TS_CHANNELS;
           const float *chosen;
 
-          if (batch_of[p] != batch || !vote_voxel (level, gu, gv, matches, xyz, &v))
+          if (batch_of[p] != batch || !vote_voxel (level, gu, gv, matches, xyz, value, &v))
             continue;
           for (int a = 0; a < TS_SOLID_AXES; a++)
             if (level->source[a] && v.axis_source[a] >= 0)

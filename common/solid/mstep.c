@@ -13,6 +13,9 @@
 #define TS_ENERGY_EXPONENT 0.8f
 /* Leaves of the exemplar index a query visits. */
 #define TS_SOLID_INDEX_LEAVES 6
+/* Variance (summed over L, a, b) of an exemplar neighbourhood at which
+ * its vote's error counts half; see match_error. */
+#define TS_SOLID_FLAT_VARIANCE 500.0f
 
 typedef struct
 {
@@ -87,6 +90,46 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
     }
 }
 
+/* Variance of the exemplar neighbourhood centred at `centre`, summed over
+ * the colour channels. */
+static float
+neighbourhood_variance (const TsImage *ex, int32_t centre, size_t radius)
+{
+  size_t w = ex->width, cx = (size_t) centre % w, cy = (size_t) centre / w, count = 0;
+  double sum[3] = { 0.0, 0.0, 0.0 }, squares = 0.0, mean_squares = 0.0;
+
+  for (size_t y = cy - radius; y <= cy + radius; y++)
+    for (size_t x = cx - radius; x <= cx + radius; x++)
+      {
+        const float *p = ts_image_pixel (ex, x, y);
+        for (int c = 0; c < 3; c++)
+          {
+            sum[c] += p[c];
+            squares += (double) p[c] * p[c];
+          }
+        count++;
+      }
+  for (int c = 0; c < 3; c++)
+    mean_squares += sum[c] * sum[c];
+  return (float) ((squares - mean_squares / (double) count) / (double) count);
+}
+
+/* A match's error per pixel, for its vote's weight, scaled down where
+ * the exemplar neighbourhood varies. Why: the E-step gives each voxel its
+ * best-matched vote, and flat neighbourhoods (stone insides) always match
+ * better than those across an edge; unscaled, they claimed the voxels of
+ * every edge, each iteration at the finest level lowered 128^3 cells'
+ * sharpness (0.83 -> 0.75) and the mortar thickened. */
+static float
+match_error (const TsImage *ex, int32_t centre, size_t radius, float ssd, float pixels)
+{
+  float error = ssd / pixels;
+  if (centre >= 0)
+    error *= TS_SOLID_FLAT_VARIANCE
+             / (neighbourhood_variance (ex, centre, radius) + TS_SOLID_FLAT_VARIANCE);
+  return error;
+}
+
 TsStatus
 ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const TsAxisGrid *gv,
                 const TsPass *pass, size_t k_use, size_t t_offset, uint32_t seed_stream,
@@ -151,8 +194,8 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
         ts_search_begin (&s, ex_pixels);
         search_centre (&s, &plane, pass, k_use, seed_stream, t, pu, pv, (size_t) i);
         matches[i].centre = s.best_centre;
-        matches[i].weight = powf (s.best / pixels_per_patch + 1e-2f,
-                                  (TS_ENERGY_EXPONENT - 2.0f) * 0.5f);
+        matches[i].weight = powf (match_error (ex, s.best_centre, radius, s.best, pixels_per_patch)
+                                  + 1e-2f, (TS_ENERGY_EXPONENT - 2.0f) * 0.5f);
       }
     free (neighbourhood);
     free (s.stamp);

@@ -89,13 +89,15 @@ TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *
                          size_t t_offset, uint32_t seed_stream, TsSolidMatch *matches,
                          TsCancel *cancel);
 
-/* Start values (start-values.c). The voxel's value (and, when recording,
- * its chosen source): of its orientations' source colours, the one
- * closest to their mean. */
-void    ts_solid_value_from_sources (TsSolidLevel *level, size_t p);
-/* Opaque source at exemplar (sx, sy), mirrored inside; a random opaque
- * pixel (from `random`) where that is transparent. */
-int32_t ts_solid_opaque_source (const TsSolidView *view, size_t sx, size_t sy, uint64_t random);
+/* --- starts of a level (start.c) ------------------------------------------ */
+
+/* Coarsest level: random exemplar blocks of side `block` per orientation. */
+void ts_solid_start_random_blocks (TsSolidLevel *l, size_t level, size_t block, uint32_t seed);
+/* Finer level: each voxel's sources are its parent's in `coarser`,
+ * refined to the child pixel of the finer exemplar level; its value is
+ * that of the orientation that won the parent. */
+void ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *coarser, size_t level,
+                                  uint32_t seed);
 
 /* --- histogram matching --------------------------------------------------- */
 

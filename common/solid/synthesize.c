@@ -280,69 +280,6 @@ level_alloc (Run *run, size_t level)
   return TS_OK;
 }
 
-/* Coarsest start: random exemplar blocks per orientation, whose votes
- * agree, rather than single random pixels. */
-static void
-start_random_blocks (Run *run, size_t level, size_t block)
-{
-  TsSolidLevel *l = &run->level;
-  size_t n = l->n;
-  uint32_t seed = run->params->seed;
-
-#pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
-  for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
-    for (size_t x = 0; x < n; x++)
-      {
-        size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
-        uint64_t cell = ((xyz[2] / block) * 1024 + xyz[1] / block) * 1024 + x / block;
-        for (int a = 0; a < TS_SOLID_AXES; a++)
-          {
-            const TsSolidView *view = &l->view[a];
-            int u, v;
-            if (!l->source[a])
-              continue;
-            ts_solid_plane_axes (a, &u, &v);
-            uint64_t r = ts_random (seed, (uint32_t) level, 0, cell, 1 + (uint32_t) a);
-            int32_t corner = view->opaque[ts_random_below (r, view->opaque_count)];
-            size_t w = view->exemplar->width;
-            l->source[a][p] = ts_solid_opaque_source (view, (size_t) corner % w + xyz[u] % block,
-                                                      (size_t) corner / w + xyz[v] % block,
-                                                      ts_random (seed, (uint32_t) level, 0, p, 5));
-          }
-        ts_solid_value_from_sources (l, p);
-      }
-}
-
-/* Finer start: each voxel's sources are its parent's, refined to the
- * child pixel of the finer exemplar level. */
-static void
-start_from_coarser (Run *run, size_t level)
-{
-  TsSolidLevel *l = &run->level, *c = &run->coarser;
-  size_t n = l->n, cn = c->n;
-  uint32_t seed = run->params->seed;
-
-#pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
-  for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
-    for (size_t x = 0; x < n; x++)
-      {
-        size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
-        size_t parent = ((xyz[2] / 2) * cn + xyz[1] / 2) * cn + x / 2;
-        for (int a = 0; a < TS_SOLID_AXES; a++)
-          {
-            int u, v;
-            if (!l->source[a])
-              continue;
-            ts_solid_plane_axes (a, &u, &v);
-            size_t cw = c->view[a].exemplar->width, s = (size_t) c->source[a][parent];
-            l->source[a][p] = ts_solid_opaque_source (&l->view[a], 2 * (s % cw) + (xyz[u] & 1),
-                                                      2 * (s / cw) + (xyz[v] & 1),
-                                                      ts_random (seed, (uint32_t) level, 0, p, 6));
-          }
-        ts_solid_value_from_sources (l, p);
-      }
-}
-
 /* Every voxel's E-step batch for this iteration: a random voxel order at
  * batch granularity, the same for any thread count. */
 static void
@@ -497,9 +434,9 @@ synthesize_level (Run *run, size_t level)
   if (status != TS_OK)
     return status;
   if (level + 1 == run->levels)
-    start_random_blocks (run, level, plan.pass[0].patch);
+    ts_solid_start_random_blocks (&run->level, level, plan.pass[0].patch, run->params->seed);
   else
-    start_from_coarser (run, level);
+    ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed);
   level_free (&run->coarser, run->volume);
   for (size_t e = 0; e < run->exemplars; e++)
     {
