@@ -256,8 +256,9 @@ ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
     }
   /* Whole copies where the seams allow: fewer, cheaper seams between
    * the picked pixels' copies. */
-  if (status == TS_OK)
-    ts_heal_consolidate (&levels[0], picked, TS_HEAL_CONSOLIDATE_SWEEPS);
+  if (status == TS_OK &&
+      ts_heal_consolidate (&levels[0], picked, TS_HEAL_CONSOLIDATE_SWEEPS) == SIZE_MAX)
+    status = TS_ERROR_OUT_OF_MEMORY;
   if (status == TS_OK)
     {
       offset = malloc (levels[0].width * levels[0].height * 3 * sizeof (float));
