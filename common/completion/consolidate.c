@@ -22,7 +22,7 @@
  * window; 4-neighbours only: median fill_bds of the bundled textures
  * 10.26 against 10.10, worst photo boundary 1.21 against 1.18). */
 #define TS_HEAL_REACH 2
-#define SIDE (2 * TS_HEAL_REACH + 1)
+#define TS_HEAL_REACH_SIDE (2 * TS_HEAL_REACH + 1)
 static const int nx4[4] = { 1, -1, 0, 0 }, ny4[4] = { 0, 0, 1, -1 };
 
 /* The source pixel at (x, y), or NULL when outside or unknown. */
@@ -158,12 +158,12 @@ ts_heal_consolidate (const TsHealLevel *l, int32_t *picked, size_t sweeps)
             best = seam_cost (l, usable, picked, x, y, ox, oy);
             /* Candidates: the offsets of the hole pixels within
              * TS_HEAL_REACH, each weighed once. */
-            ptrdiff_t tried[2 * SIDE * SIDE];
+            ptrdiff_t tried[2 * TS_HEAL_REACH_SIDE * TS_HEAL_REACH_SIDE];
             size_t count = 0;
-            for (size_t k = 0; k < SIDE * SIDE; k++)
+            for (size_t k = 0; k < TS_HEAL_REACH_SIDE * TS_HEAL_REACH_SIDE; k++)
               {
-                ptrdiff_t qx = (ptrdiff_t) (x + k % SIDE) - TS_HEAL_REACH;
-                ptrdiff_t qy = (ptrdiff_t) (y + k / SIDE) - TS_HEAL_REACH;
+                ptrdiff_t qx = (ptrdiff_t) (x + k % TS_HEAL_REACH_SIDE) - TS_HEAL_REACH;
+                ptrdiff_t qy = (ptrdiff_t) (y + k / TS_HEAL_REACH_SIDE) - TS_HEAL_REACH;
                 size_t q, j = 0;
                 float c;
                 if (qx < 0 || qy < 0 || qx >= (ptrdiff_t) w || qy >= (ptrdiff_t) h)
