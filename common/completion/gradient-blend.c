@@ -21,6 +21,15 @@
  * 0.01, measured before the flatness penalty). */
 #define TS_HEAL_SEAM_WEIGHT 0.01f
 
+/* Screening of the blend: weight of a copied pixel's pull to its own
+ * value, TS_HEAL_SCREEN * g^2 / (g^2 + KAPPA^2) with g^2 its source's mean
+ * squared L step (Lab units). On the bundled cases it keeps the
+ * textures' copies whole (median fill_bds 11.2 unscreened, 10.3 so)
+ * while the photos' smooth backgrounds still blend (boundary median
+ * 1.06, worst 1.21; a flat 0.2 everywhere gives 1.38 / 1.44). */
+#define TS_HEAL_SCREEN 0.2f
+#define TS_HEAL_SCREEN_KAPPA 6.0f
+
 static const int step_x[4] = { 1, -1, 0, 0 }, step_y[4] = { 0, 0, 1, -1 };
 
 /* The colour step from the source pixel `s` to its neighbour one step
@@ -38,6 +47,17 @@ source_step (const TsHealLevel *l, size_t s, int dx, int dy, float *g)
   for (int c = 0; c < 3; c++)
     g[c] = a[c] - b[c];
   return true;
+}
+
+static float
+screening (const TsHealLevel *l, size_t s)
+{
+  float g2 = 0.0f, g[3];
+
+  for (int k = 0; k < 4; k++)
+    if (source_step (l, s, step_x[k], step_y[k], g))
+      g2 += 0.25f * g[0] * g[0];
+  return TS_HEAL_SCREEN * g2 / (g2 + TS_HEAL_SCREEN_KAPPA * TS_HEAL_SCREEN_KAPPA);
 }
 
 /* The equation of one hole pixel p: value = (constant + weighted sum of
@@ -118,8 +138,17 @@ ts_heal_gradient_blend (const TsHealLevel *l, const int32_t *picked, float *offs
         if (!l->hole[p])
           continue;
         count[p] = pixel_equation (l, picked, x, (size_t) y, constant + p * 3, weights + p * 4);
+        /* Screened (Bhat et al. 2008): the copy itself pulls with a weight
+         * that grows with its texture, so in busy texture the correction
+         * stays near the seams and the copy's windows stay whole; in
+         * smooth parts it still spreads. */
+        float screen = screening (l, (size_t) picked[p]);
+        count[p] += screen;
         for (int c = 0; c < 3; c++)
-          value[p * 3 + c] = l->source[(size_t) picked[p] * TS_CHANNELS + c] + offset[p * 3 + c];
+          {
+            constant[p * 3 + c] += screen * l->source[(size_t) picked[p] * TS_CHANNELS + c];
+            value[p * 3 + c] = l->source[(size_t) picked[p] * TS_CHANNELS + c] + offset[p * 3 + c];
+          }
       }
   /* Only the hole's bounding box holds unknowns. */
   size_t bx0 = w, by0 = h, bx1 = 0, by1 = 0;

@@ -144,6 +144,12 @@ TsStatus ts_heal_search_pass (TsHealLevel *level, uint32_t seed, uint32_t level_
  * `picked`: whose pick changed). */
 size_t   ts_heal_vote (TsHealLevel *level, bool pick, int32_t *picked, TsCancel *cancel);
 
+/* Local moves of the finest level's picks (`sweeps` red-black sweeps)
+ * towards fewer and cheaper seams between copies, each pick staying in a
+ * valid source patch; returns the number of moves, SIZE_MAX if out of
+ * memory. */
+size_t   ts_heal_consolidate (const TsHealLevel *level, int32_t *picked, size_t sweeps);
+
 /* Colour offsets (L, a, b per pixel of the level, 3 floats) that hide the
  * outline: where a copied pixel meets a known one, the known pixel minus
  * what lay beside the copy's source is spread smoothly over a band of the

@@ -18,6 +18,9 @@
 #define TS_HEAL_COARSEST_DEPTH 12
 /* A coarser level needs this many valid source centres to be worth it. */
 #define TS_HEAL_MIN_SOURCES 16
+/* Sweeps of ts_heal_consolidate at most (the bundled cases measure the
+ * same with 8 and 20). */
+#define TS_HEAL_CONSOLIDATE_SWEEPS 10
 /* Iterations stop once fewer hole pixels than this fraction change. */
 #define TS_HEAL_CONVERGED 0.002
 
@@ -251,6 +254,11 @@ ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
         picked[p] = -1;
       status = run_levels (params, &run, levels, count, picked);
     }
+  /* Whole copies where the seams allow: fewer, cheaper seams between
+   * the picked pixels' copies. */
+  if (status == TS_OK &&
+      ts_heal_consolidate (&levels[0], picked, TS_HEAL_CONSOLIDATE_SWEEPS) == SIZE_MAX)
+    status = TS_ERROR_OUT_OF_MEMORY;
   if (status == TS_OK)
     {
       offset = malloc (levels[0].width * levels[0].height * 3 * sizeof (float));

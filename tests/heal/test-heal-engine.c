@@ -71,6 +71,47 @@ test_fill (const TsImage *image)
   free (hole);
 }
 
+/* Every hole pixel comes from where the options allow: left or right of
+ * the hole's columns with sample-from sides, above or below its rows
+ * with above-below, and within the context of the hole's bounds. */
+static void
+test_sources_allowed (const TsImage *image)
+{
+  size_t w = image->width, h = image->height, n = w * h, x0 = w / 2 - 16, y0 = h / 2 - 16;
+  uint8_t *hole = square_hole (w, h, x0, y0, 32);
+  int32_t *map = malloc (n * sizeof (int32_t));
+  static const TsHealSampleFrom from[3] = { TS_HEAL_SIDES, TS_HEAL_ABOVE_BELOW, TS_HEAL_ALL_AROUND };
+  TsHealParams p;
+  TsImage out = { 0 };
+  TsError error;
+
+  if (!hole || !map)
+    abort ();
+  for (int k = 0; k < 3; k++)
+    {
+      size_t wrong = 0, context = k == 2 ? 20 : 0;
+      ts_heal_params_init (&p);
+      p.seed = 3;
+      p.sample_from = from[k];
+      p.context = context;
+      CHECK (heal (&p, image, hole, &out, map, &error) == TS_OK, "%s", error.message);
+      for (size_t i = 0; i < n; i++)
+        if (hole[i])
+          {
+            size_t sx = (size_t) map[i] % w, sy = (size_t) map[i] / w;
+            bool beside = sx < x0 || sx >= x0 + 32, over = sy < y0 || sy >= y0 + 32;
+            wrong += k == 0 ? !beside : k == 1 ? !over
+                     : sx + context + 3 < x0 || sx >= x0 + 32 + context + 3 ||
+                       sy + context + 3 < y0 || sy >= y0 + 32 + context + 3;
+          }
+      CHECK (wrong == 0, "sample-from %d, context %zu: %zu hole pixels copied from outside "
+             "the allowed source", (int) from[k], context, wrong);
+      free (out.pixels);
+    }
+  free (map);
+  free (hole);
+}
+
 static void
 test_memory_follows_context (void)
 {
@@ -214,6 +255,7 @@ main (void)
 
   test_load_exemplar ("stone33.png", &stone);
   test_fill (&stone);
+  test_sources_allowed (&stone);
   test_errors (&stone);
   test_progress_and_cancel (&stone);
   test_memory_follows_context ();
