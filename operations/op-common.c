@@ -5,6 +5,7 @@
 #include "op-lab.h"
 
 #include <glib/gi18n-lib.h>
+#include <stdarg.h>
 #include <stdio.h>
 
 void
@@ -277,4 +278,16 @@ ts_op_fail (GeglOperation       *operation,
   g_warning ("%s: %s", name ? name : "texsynth", message);
   /* The output may be a cache that still holds an earlier result. */
   gegl_buffer_clear (output, roi);
+}
+
+gboolean
+ts_op_set_error (TsError *error, TsStatus status, const gchar *format, ...)
+{
+  va_list args;
+
+  error->status = status;
+  va_start (args, format);
+  vsnprintf (error->message, sizeof error->message, format, args);
+  va_end (args);
+  return FALSE;
 }

@@ -112,6 +112,11 @@ void ts_op_patch_sizes (int patch_size, int fine_patch_size, int *patch_out, int
 /* The memory-limit property (MiB, 0 = the engine's default) in bytes. */
 size_t ts_op_memory_limit (int mebibytes);
 
+/* Fill `error` with `status` and a printf-style message; returns FALSE,
+ * so a check can `return ts_op_set_error (...)`. */
+gboolean ts_op_set_error (TsError *error, TsStatus status, const gchar *format, ...)
+  G_GNUC_PRINTF (3, 4);
+
 /* The defined result of a failed synthesis: warn "<op name>: <message>"
  * and make `roi` of `output` fully transparent. */
 void ts_op_fail (GeglOperation       *operation,

@@ -121,21 +121,6 @@ target_clear (Target *target)
 }
 
 static gboolean
-set_error (TsError *error, const gchar *format, ...) G_GNUC_PRINTF (2, 3);
-
-static gboolean
-set_error (TsError *error, const gchar *format, ...)
-{
-  va_list args;
-
-  error->status = TS_ERROR_IO;
-  va_start (args, format);
-  vsnprintf (error->message, sizeof error->message, format, args);
-  va_end (args);
-  return FALSE;
-}
-
-static gboolean
 has_suffix (const gchar *path, const gchar *suffix)
 {
   size_t n = strlen (path), m = strlen (suffix);
@@ -152,7 +137,7 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
 
   memset (target, 0, sizeof *target);
   if (!path || !path[0])
-    return set_error (error, _("no file name given: set 'path'"));
+    return ts_op_set_error (error, TS_ERROR_IO, _("no file name given: set 'path'"));
   target->format = o->format;
   if (target->format == TEXSYNTH_VOLUME_SAVE_FORMAT_AUTO)
     {
@@ -165,9 +150,10 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
       else if (has_suffix (path, ".png"))
         target->format = TEXSYNTH_VOLUME_SAVE_FORMAT_ATLAS;
       else
-        return set_error (error, _("cannot tell the format of '%s' from its name: end it with "
-                            ".vol, .dds or .png (an atlas), or with '/' for a folder of PNG "
-                            "slices, or set 'format'"), path);
+        return ts_op_set_error (error, TS_ERROR_IO,
+                                _("cannot tell the format of '%s' from its name: end it with "
+                                  ".vol, .dds or .png (an atlas), or with '/' for a folder of PNG "
+                                  "slices, or set 'format'"), path);
     }
 
   if (target->format == TEXSYNTH_VOLUME_SAVE_FORMAT_PNG_SLICES)
@@ -187,7 +173,8 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
         }
     }
   else if (folder)
-    return set_error (error, _("'%s' is a folder: give a file name, or use format=png-slices"),
+    return ts_op_set_error (error, TS_ERROR_IO,
+                            _("'%s' is a folder: give a file name, or use format=png-slices"),
                       path);
   else
     {
@@ -198,16 +185,16 @@ resolve_target (GeglProperties *o, Target *target, TsError *error)
   if (!g_file_test (target->folder, G_FILE_TEST_IS_DIR))
     {
       gboolean missing = !g_file_test (target->folder, G_FILE_TEST_EXISTS);
-      set_error (error,
-                 missing ? _("the folder '%s' does not exist") : _("'%s' is not a folder"),
-                 target->folder);
+      ts_op_set_error (error, TS_ERROR_IO,
+                       missing ? _("the folder '%s' does not exist") : _("'%s' is not a folder"),
+                       target->folder);
       target_clear (target);
       return FALSE;
     }
   if (access (target->folder, W_OK) != 0)
     {
-      set_error (error, _("cannot write in the folder '%s': %s"), target->folder,
-                 g_strerror (errno));
+      ts_op_set_error (error, TS_ERROR_IO, _("cannot write in the folder '%s': %s"),
+                       target->folder, g_strerror (errno));
       target_clear (target);
       return FALSE;
     }
@@ -254,11 +241,13 @@ check_content (GeglOperation *operation, GeglProperties *o, const Target *target
   if (o->content == TEXSYNTH_VOLUME_SAVE_CONTENT_SOURCE)
     {
       if (ts_volume_map_connected (operation))
-        return set_error (error, _("content=source writes the sources, not a map: disconnect "
-                                   "the map or set content=colour"));
+        return ts_op_set_error (error, TS_ERROR_IO,
+                                _("content=source writes the sources, not a map: disconnect "
+                                  "the map or set content=colour"));
       if (target->format != TEXSYNTH_VOLUME_SAVE_FORMAT_DDS)
-        return set_error (error, _("content=source is written as a .dds volume only "
-                                   "(16-bit x, y, orientation): end the path with .dds"));
+        return ts_op_set_error (error, TS_ERROR_IO,
+                                _("content=source is written as a .dds volume only "
+                                  "(16-bit x, y, orientation): end the path with .dds"));
       return TRUE;
     }
   return !ts_volume_map_connected (operation) ||

@@ -35,21 +35,6 @@ pad_box (GeglOperation *operation, const gchar *pad)
   return box ? *box : empty;
 }
 
-static gboolean
-fail (TsError *error, TsStatus status, const gchar *format, ...) G_GNUC_PRINTF (3, 4);
-
-static gboolean
-fail (TsError *error, TsStatus status, const gchar *format, ...)
-{
-  va_list args;
-
-  error->status = status;
-  va_start (args, format);
-  vsnprintf (error->message, sizeof error->message, format, args);
-  va_end (args);
-  return FALSE;
-}
-
 gboolean
 ts_volume_map_check (GeglOperation *operation, int free_axis, TsError *error)
 {
@@ -62,15 +47,15 @@ ts_volume_map_check (GeglOperation *operation, int free_axis, TsError *error)
                      free_axis != TS_VOLUME_OP_FREE_Y;
 
   if (other_x || other_y)
-    return fail (error, TS_ERROR_BAD_PARAMETER,
-                 _("a map is aligned with one exemplar, but '%s' gives the slices across %s "
-                   "their own: disconnect the map and save content=source, which names each "
-                   "voxel's exemplar"), other_x ? "aux" : "aux2", other_x ? "x" : "y");
+    return ts_op_set_error (error, TS_ERROR_BAD_PARAMETER,
+                            _("a map is aligned with one exemplar, but '%s' gives the slices across %s "
+                              "their own: disconnect the map and save content=source, which names each "
+                              "voxel's exemplar"), other_x ? "aux" : "aux2", other_x ? "x" : "y");
   if (map.width != input.width || map.height != input.height)
-    return fail (error, TS_ERROR_BAD_PARAMETER,
-                 _("the map is %dx%d but the exemplar %dx%d: a map must be aligned with the "
-                   "exemplar, pixel for pixel"), map.width, map.height, input.width,
-                 input.height);
+    return ts_op_set_error (error, TS_ERROR_BAD_PARAMETER,
+                            _("the map is %dx%d but the exemplar %dx%d: a map must be aligned with the "
+                              "exemplar, pixel for pixel"),
+                            map.width, map.height, input.width, input.height);
   return TRUE;
 }
 
@@ -87,9 +72,10 @@ ts_volume_map_lay_out (GeglOperation *operation, const TsVolumeEntry *entry, con
 
   if (!source || box.width <= 0 || box.height <= 0)
     {
-      fail (error, TS_ERROR_BAD_PARAMETER, _("the map is %dx%d but the exemplar %dx%d: a map "
-                                             "must be aligned with the exemplar, pixel for pixel"),
-            box.width, box.height, 0, 0);
+      ts_op_set_error (error, TS_ERROR_BAD_PARAMETER,
+                       _("the map is %dx%d but the exemplar %dx%d: a map "
+                         "must be aligned with the exemplar, pixel for pixel"),
+                       box.width, box.height, 0, 0);
       return NULL;
     }
   map = g_try_malloc (pixels * pixel_bytes);
@@ -98,7 +84,8 @@ ts_volume_map_lay_out (GeglOperation *operation, const TsVolumeEntry *entry, con
     {
       g_free (map);
       g_free (laid);
-      fail (error, TS_ERROR_OUT_OF_MEMORY, _("out of memory for a %zux%zu slice"), size, size);
+      ts_op_set_error (error, TS_ERROR_OUT_OF_MEMORY,
+                       _("out of memory for a %zux%zu slice"), size, size);
       return NULL;
     }
   /* Straight from the map's node in the asked format: 8-bit maps are
@@ -127,7 +114,8 @@ ts_volume_sources_xy (GeglOperation *operation, const TsVolumeEntry *entry, TsEr
 
   if (!xy)
     {
-      fail (error, TS_ERROR_OUT_OF_MEMORY, _("out of memory for a %zux%zu slice"), size, size);
+      ts_op_set_error (error, TS_ERROR_OUT_OF_MEMORY,
+                       _("out of memory for a %zux%zu slice"), size, size);
       return NULL;
     }
   for (int a = 0; a < 3; a++)

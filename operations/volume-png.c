@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later
  */
 #include "volume-png.h"
+#include "op-common.h"
 
 #include <glib/gi18n-lib.h>
 #include <glib/gstdio.h>
@@ -16,21 +17,6 @@
 
 static const guint8 png_signature[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
 static const guint8 png_end[12] = { 0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82 };
-
-static gboolean
-fail (TsError *error, TsStatus status, const gchar *format, ...) G_GNUC_PRINTF (3, 4);
-
-static gboolean
-fail (TsError *error, TsStatus status, const gchar *format, ...)
-{
-  va_list args;
-
-  error->status = status;
-  va_start (args, format);
-  vsnprintf (error->message, sizeof error->message, format, args);
-  va_end (args);
-  return FALSE;
-}
 
 void
 ts_png_set_init (TsPngSet *set)
@@ -79,7 +65,8 @@ check_png (const gchar *path, const gchar *target, size_t width, size_t height, 
   off_t length;
 
   if (fd < 0)
-    return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target, g_strerror (errno));
+    return ts_op_set_error (error, TS_ERROR_IO,
+                            _("cannot write '%s': %s"), target, g_strerror (errno));
   length = lseek (fd, 0, SEEK_END);
   if (length >= (off_t) (sizeof head + sizeof tail) &&
       pread (fd, head, sizeof head, 0) == (ssize_t) sizeof head &&
@@ -93,12 +80,14 @@ check_png (const gchar *path, const gchar *target, size_t width, size_t height, 
     {
       int errnum = errno;
       close (fd);
-      return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target, g_strerror (errnum));
+      return ts_op_set_error (error, TS_ERROR_IO,
+                              _("cannot write '%s': %s"), target, g_strerror (errnum));
     }
   close (fd);
   if (!ok)
-    return fail (error, TS_ERROR_IO, _("cannot write '%s': GEGL's png-save did not write the "
-                   "whole image (disk full?)"), target);
+    return ts_op_set_error (error, TS_ERROR_IO,
+                            _("cannot write '%s': GEGL's png-save did not write the "
+                              "whole image (disk full?)"), target);
   return TRUE;
 }
 
@@ -128,8 +117,9 @@ ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
   if (!gegl_has_operation ("gegl:png-save"))
     {
       g_free (temp);
-      return fail (error, TS_ERROR_IO, _("GEGL's gegl:png-save operation is not available "
-                     "(check GEGL_PATH)"));
+      return ts_op_set_error (error, TS_ERROR_IO,
+                              _("GEGL's gegl:png-save operation is not available "
+                                "(check GEGL_PATH)"));
     }
   /* Reserve a unique name; png-save then replaces the empty file. */
   fd = g_mkstemp (temp);
@@ -137,7 +127,8 @@ ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
     {
       int errnum = errno;
       g_free (temp);
-      return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target, g_strerror (errnum));
+      return ts_op_set_error (error, TS_ERROR_IO,
+                              _("cannot write '%s': %s"), target, g_strerror (errnum));
     }
   close (fd);
   g_ptr_array_add (set->targets, g_strdup (target));
@@ -163,7 +154,7 @@ ts_png_set_commit (TsPngSet *set, TsError *error)
           /* Earlier files are already in place; drop only the rest. */
           g_ptr_array_remove_range (set->temps, 0, i);
           ts_png_set_abort (set);
-          return fail (error, TS_ERROR_IO, _("cannot write '%s': %s"), target,
+          return ts_op_set_error (error, TS_ERROR_IO, _("cannot write '%s': %s"), target,
                        g_strerror (errnum));
         }
     }
