@@ -36,6 +36,8 @@ typedef struct
   int32_t     *source[TS_SOLID_AXES]; /* exemplar index per voxel and
                                           orientation; NULL where free */
   TsSolidView  view[TS_SOLID_AXES];
+  bool         coarse;     /* a coarser level than the finest: the vote
+                              errors' flat variance follows the exemplar */
 } TsSolidLevel;
 
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust
