@@ -38,6 +38,8 @@ typedef struct
   TsSolidSource *chosen;   /* finest level, if asked: the vote each value
                               copies (orientation and index); else NULL */
   TsSolidView  view[TS_SOLID_AXES];
+  bool         coarse;     /* a coarser level than the finest: the vote
+                              errors' flat variance follows the exemplar */
 } TsSolidLevel;
 
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust
