@@ -122,21 +122,14 @@ size_t
 ts_heal_consolidate (const TsHealLevel *l, int32_t *picked, size_t sweeps)
 {
   size_t w = l->width, h = l->height, sw = l->source_width, moved = 0, swept = 0;
-  size_t bx0 = w, by0 = h, bx1 = 0, by1 = 0;
+  size_t bx0, by0, bx1, by1;
   uint8_t *usable = usable_pixels (l);
 
   if (!usable)
     return SIZE_MAX;
 
-  for (size_t y = 0; y < h; y++)   /* only the hole's bounding box holds labels */
-    for (size_t x = 0; x < w; x++)
-      if (l->hole[y * w + x])
-        {
-          bx0 = x < bx0 ? x : bx0;
-          bx1 = x + 1 > bx1 ? x + 1 : bx1;
-          by0 = y < by0 ? y : by0;
-          by1 = y + 1;
-        }
+  /* Only the hole's bounding box holds labels. */
+  ts_heal_hole_bounds (l->hole, w, h, &bx0, &by0, &bx1, &by1);
   /* Red-black sweeps in raster order (a pixel's seams read its
    * 4-neighbours, of the other colour). One thread: as in the
    * gradient blend, the barriers between short sweeps cost more than

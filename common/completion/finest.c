@@ -44,9 +44,9 @@ ts_heal_region (const TsHealParams *params, size_t width, size_t height, size_t 
   *ry1 = grow_up (y1 < height ? y1 : height, margin, height);
 }
 
-static bool
-hole_bounds (const uint8_t *hole, size_t w, size_t h, size_t *x0, size_t *y0, size_t *x1,
-             size_t *y1)
+bool
+ts_heal_hole_bounds (const uint8_t *hole, size_t w, size_t h, size_t *x0, size_t *y0, size_t *x1,
+                     size_t *y1)
 {
   *x0 = w;
   *y0 = h;
@@ -106,7 +106,7 @@ ts_heal_prepare_finest (const TsHealParams *params, const TsImage *image, const 
   memset (l, 0, sizeof *l);
   memset (area, 0, sizeof *area);
   memset (crop, 0, sizeof *crop);
-  if (!hole_bounds (hole, image->width, image->height, &hx0, &hy0, &hx1, &hy1))
+  if (!ts_heal_hole_bounds (hole, image->width, image->height, &hx0, &hy0, &hx1, &hy1))
     {
       crop->empty = true;
       return TS_OK;

@@ -151,16 +151,8 @@ ts_heal_gradient_blend (const TsHealLevel *l, const int32_t *picked, float *offs
           }
       }
   /* Only the hole's bounding box holds unknowns. */
-  size_t bx0 = w, by0 = h, bx1 = 0, by1 = 0;
-  for (size_t y = 0; y < h; y++)
-    for (size_t x = 0; x < w; x++)
-      if (l->hole[y * w + x])
-        {
-          bx0 = x < bx0 ? x : bx0;
-          bx1 = x + 1 > bx1 ? x + 1 : bx1;
-          by0 = y < by0 ? y : by0;
-          by1 = y + 1;
-        }
+  size_t bx0, by0, bx1, by1;
+  ts_heal_hole_bounds (l->hole, w, h, &bx0, &by0, &bx1, &by1);
   /* Over-relaxation tuned to the hole's depth, red then black pixels, on
    * one thread: 80 half-sweeps of a few 10^4 pixels cost less than the
    * barriers between them once another process shares the cores

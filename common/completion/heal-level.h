@@ -79,6 +79,11 @@ typedef struct
   bool   empty;            /* the hole has no pixel                      */
 } TsHealCrop;
 
+/* Bounding box [x0, x1) x [y0, y1) of the nonzero pixels of a w x h
+ * hole; false (and an empty box) if there is none. */
+bool ts_heal_hole_bounds (const uint8_t *hole, size_t w, size_t h, size_t *x0, size_t *y0,
+                          size_t *x1, size_t *y1);
+
 TsStatus ts_heal_prepare_finest (const TsHealParams *params, const TsImage *image,
                                  const uint8_t *hole, const TsImage *source,
                                  TsHealLevel *level, TsHealArea *area, TsHealCrop *crop);
