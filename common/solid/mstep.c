@@ -13,15 +13,6 @@
 #define TS_ENERGY_EXPONENT 0.8f
 /* Leaves of the exemplar index a query visits. */
 #define TS_SOLID_INDEX_LEAVES 6
-/* Variance (summed over L, a, b) of an exemplar neighbourhood at which
- * its vote's error counts half; see match_error. */
-#define TS_SOLID_FLAT_VARIANCE 500.0f
-/* At the coarser levels, the flat variance is this many times the
- * exemplar's median neighbourhood variance, so it follows each
- * exemplar's contrast: 2 gives 128^3 cells (median 69) 138 and blobs
- * (median 296) 593. An absolute 150 there blunted blobs (sharpness 0.88
- * instead of 0.91). */
-#define TS_SOLID_COARSE_FLAT_FACTOR 2.0f
 
 typedef struct
 {
@@ -96,72 +87,18 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
     }
 }
 
-/* Variance of the exemplar neighbourhood centred at `centre`, summed over
- * the colour channels. */
-static float
-neighbourhood_variance (const TsImage *ex, int32_t centre, size_t radius)
-{
-  size_t w = ex->width, cx = (size_t) centre % w, cy = (size_t) centre / w, count = 0;
-  double sum[3] = { 0.0, 0.0, 0.0 }, squares = 0.0, mean_squares = 0.0;
-
-  for (size_t y = cy - radius; y <= cy + radius; y++)
-    for (size_t x = cx - radius; x <= cx + radius; x++)
-      {
-        const float *p = ts_image_pixel (ex, x, y);
-        for (int c = 0; c < 3; c++)
-          {
-            sum[c] += p[c];
-            squares += (double) p[c] * p[c];
-          }
-        count++;
-      }
-  for (int c = 0; c < 3; c++)
-    mean_squares += sum[c] * sum[c];
-  return (float) ((squares - mean_squares / (double) count) / (double) count);
-}
-
 /* A match's error per pixel, for its vote's weight, scaled down where
  * the exemplar neighbourhood varies. Why: the E-step gives each voxel its
  * best-matched vote, and flat neighbourhoods (stone insides) always match
  * better than those across an edge; unscaled, they claimed the voxels of
  * every edge, each iteration at the finest level lowered 128^3 cells'
  * sharpness (0.83 -> 0.75) and the mortar thickened. */
-static int
-compare_float (const void *a, const void *b)
-{
-  float x = *(const float *) a, y = *(const float *) b;
-  return (x > y) - (x < y);
-}
-
-/* The flat variance of match_error: absolute at the finest level, at the
- * coarser ones TS_SOLID_COARSE_FLAT_FACTOR times the median variance of
- * the exemplar's whole neighbourhoods. */
 static float
-flat_variance (const TsSolidLevel *level, const TsImage *ex, size_t radius)
-{
-  size_t w = ex->width, h = ex->height, count = 0;
-  float *v, median;
-
-  if (!level->coarse || w <= 2 * radius || h <= 2 * radius)
-    return TS_SOLID_FLAT_VARIANCE;
-  v = malloc ((w - 2 * radius) * (h - 2 * radius) * sizeof (float));
-  if (!v)
-    return TS_SOLID_FLAT_VARIANCE;
-  for (size_t y = radius; y + radius < h; y++)
-    for (size_t x = radius; x + radius < w; x++)
-      v[count++] = neighbourhood_variance (ex, (int32_t) (y * w + x), radius);
-  qsort (v, count, sizeof (float), compare_float);
-  median = v[(count - 1) / 2];
-  free (v);
-  return median > 0.0f ? TS_SOLID_COARSE_FLAT_FACTOR * median : TS_SOLID_FLAT_VARIANCE;
-}
-
-static float
-match_error (const TsImage *ex, int32_t centre, size_t radius, float ssd, float pixels, float flat)
+match_error (const TsSolidVarianceMap *map, int32_t centre, float ssd, float pixels)
 {
   float error = ssd / pixels;
-  if (centre >= 0)
-    error *= flat / (neighbourhood_variance (ex, centre, radius) + flat);
+  if (centre >= 0 && map->variance)
+    error *= map->flat / (map->variance[centre] + map->flat);
   return error;
 }
 
@@ -177,7 +114,6 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
   float pixels_per_patch = (float) (pass->patch * pass->patch);
   Plane plane = { level, axis, 0, 0, 0 };
   int failed = 0, u_axis, v_axis;
-  float flat = flat_variance (level, ex, pass->patch / 2);
 
   ts_solid_plane_axes (axis, &u_axis, &v_axis);
   plane.stride_u = ts_solid_stride (n, u_axis);
@@ -230,7 +166,7 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
         ts_search_begin (&s, ex_pixels);
         search_centre (&s, &plane, pass, k_use, seed_stream, t, pu, pv, (size_t) i);
         matches[i].centre = s.best_centre;
-        matches[i].weight = powf (match_error (ex, s.best_centre, radius, s.best, pixels_per_patch, flat)
+        matches[i].weight = powf (match_error (level->view[axis].variance, s.best_centre, s.best, pixels_per_patch)
                                   + 1e-2f, (TS_ENERGY_EXPONENT - 2.0f) * 0.5f);
       }
     free (neighbourhood);

@@ -17,6 +17,22 @@
  * small to repay waking the others, above all on a busy machine. */
 #define TS_SOLID_PARALLEL_EDGE 32
 
+/* Colour variance of every whole exemplar neighbourhood of one side
+ * (0 where the neighbourhood does not fit), and the variance at which a
+ * vote's error counts half (variance-map.c). */
+typedef struct
+{
+  size_t radius;
+  float *variance;
+  float  flat;
+} TsSolidVarianceMap;
+
+/* Worked out once per pass: `coarse` for the levels above the finest,
+ * whose flat variance follows the exemplar's median. */
+TsStatus ts_solid_variance_map_build (const TsImage *ex, size_t radius, bool coarse,
+                                      TsSolidVarianceMap *map);
+void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
+
 /* One slice orientation at one level. */
 typedef struct
 {
@@ -26,6 +42,7 @@ typedef struct
   size_t                opaque_count;
   float                *excess;      /* histogram excess per exemplar pixel, or NULL */
   const TsSolidIndex   *index;       /* all neighbourhoods of the pass's size, or NULL */
+  const TsSolidVarianceMap *variance; /* of the pass's neighbourhoods   */
 } TsSolidView;
 
 typedef struct
@@ -38,8 +55,6 @@ typedef struct
   TsSolidSource *chosen;   /* finest level, if asked: the vote each value
                               copies (orientation and index); else NULL */
   TsSolidView  view[TS_SOLID_AXES];
-  bool         coarse;     /* a coarser level than the finest: the vote
-                              errors' flat variance follows the exemplar */
 } TsSolidLevel;
 
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust

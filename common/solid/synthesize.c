@@ -39,6 +39,7 @@ typedef struct
   size_t          opaque_count;
   float          *excess;
   TsSolidIndex    index;      /* all neighbourhoods of the current pass */
+  TsSolidVarianceMap variance; /* their colour variances                */
 } Exemplar;
 
 typedef struct
@@ -165,6 +166,7 @@ run_free (Run *run)
       free (ex->opaque);
       free (ex->excess);
       ts_solid_index_free (&ex->index);
+      ts_solid_variance_map_free (&ex->variance);
     }
 }
 
@@ -367,8 +369,8 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
   return status;
 }
 
-/* Every exemplar's index of all neighbourhoods of `patch` at `level`,
- * and the views that search it. */
+/* Every exemplar's index of all neighbourhoods of `patch` at `level` and
+ * their variances, and the views that search and weigh with them. */
 static TsStatus
 index_exemplars (Run *run, size_t level, size_t patch)
 {
@@ -378,9 +380,15 @@ index_exemplars (Run *run, size_t level, size_t patch)
       TsStatus status;
       ts_solid_index_free (&ex->index);
       status = ts_solid_index_build (&ex->pyramid, level, patch, &ex->index);
+      if (status == TS_OK)
+        status = ts_solid_variance_map_build (&ex->pyramid.level[level], patch / 2, level > 0,
+                                              &ex->variance);
       if (status != TS_OK)
         return status;
     }
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    if (run->exemplar_of[a] >= 0)
+      run->level.view[a].variance = &run->exemplar[run->exemplar_of[a]].variance;
   for (int a = 0; a < TS_SOLID_AXES; a++)
     run->level.view[a].index = run->exemplar_of[a] < 0 || run->exemplar[run->exemplar_of[a]].index.patch == 0
                                ? NULL : &run->exemplar[run->exemplar_of[a]].index;
@@ -447,7 +455,6 @@ synthesize_level (Run *run, size_t level)
   else
     ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed);
   level_free (&run->coarser, run->volume);
-  run->level.coarse = level > 0;
   for (size_t e = 0; e < run->exemplars; e++)
     {
       /* This level's candidates seed the next finer level's MRPM. */
