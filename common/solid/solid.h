@@ -55,6 +55,7 @@ typedef struct
   TsSolidSource *chosen;   /* finest level, if asked: the vote each value
                               copies (orientation and index); else NULL */
   TsSolidView  view[TS_SOLID_AXES];
+  float        continuation; /* E-step weight per continued neighbour (estep.c) */
 } TsSolidLevel;
 
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust

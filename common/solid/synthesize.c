@@ -28,6 +28,12 @@
  * coarse flat variance of mstep.c). Six blunt 128^3 blobs (sharpness
  * 0.94 -> 0.85) and granite1's axis-edges rise to 1.22. */
 #define TS_SOLID_MIDDLE_ITERATIONS 4
+/* E-step weight per neighbour a vote continues (estep.c), at the finest
+ * level: 2 takes 128^3 cells' sharpness 0.90 -> 0.93 x the exemplar's
+ * and cleans their mortar of lone voxels. At the coarser levels too it
+ * gave cells straighter polygons, but 64^3 blobs' coherence 1.18 x the
+ * truth's (bound 1.15). */
+#define TS_SOLID_CONTINUATION 2.0f
 
 typedef struct
 {
@@ -455,6 +461,7 @@ synthesize_level (Run *run, size_t level)
   else
     ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed);
   level_free (&run->coarser, run->volume);
+  run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;
   for (size_t e = 0; e < run->exemplars; e++)
     {
       /* This level's candidates seed the next finer level's MRPM. */
