@@ -181,8 +181,10 @@ collect_axis (Votes *v, const TsSolidLevel *level, int axis, const TsAxisGrid *g
 
 static void
 collect (Votes *v, const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
-         TsSolidMatch *const matches[TS_SOLID_AXES], const size_t xyz[3])
+         TsSolidMatch *const matches[TS_SOLID_AXES])
 {
+  const size_t *xyz = v->xyz;
+
   for (int axis = 0; axis < TS_SOLID_AXES; axis++)
     {
       int u, w;
@@ -209,7 +211,7 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
       v->axis_weight[a] = 0.0f;
       v->axis_source[a] = -1;
     }
-  collect (v, level, gu, gv, matches, xyz);
+  collect (v, level, gu, gv, matches);
   return v->source >= 0;
 }
 
