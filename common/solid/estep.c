@@ -40,9 +40,9 @@
 /* 128^3 cells' sharpness 0.89 -> 0.93 x the exemplar's with it. */
 #define TS_SOLID_INERTIA 1.5f
 
-/* An in-slice neighbour of the voted voxel that a vote may continue: its
- * value (NULL if it is in the current batch) and its step (dx, dy) in
- * the exemplar's axes. */
+/* An in-slice neighbour of the voted voxel, outside the current batch,
+ * that a vote may continue: its value and its step (dx, dy) in the
+ * exemplar's axes. */
 typedef struct
 {
   const float *value;
