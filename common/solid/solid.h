@@ -22,7 +22,6 @@
  * vote's error counts half (variance-map.c). */
 typedef struct
 {
-  size_t radius;
   float *variance;
   float  flat;
 } TsSolidVarianceMap;

@@ -393,11 +393,11 @@ index_exemplars (Run *run, size_t level, size_t patch)
         return status;
     }
   for (int a = 0; a < TS_SOLID_AXES; a++)
-    if (run->exemplar_of[a] >= 0)
-      run->level.view[a].variance = &run->exemplar[run->exemplar_of[a]].variance;
-  for (int a = 0; a < TS_SOLID_AXES; a++)
-    run->level.view[a].index = run->exemplar_of[a] < 0 || run->exemplar[run->exemplar_of[a]].index.patch == 0
-                               ? NULL : &run->exemplar[run->exemplar_of[a]].index;
+    {
+      Exemplar *ex = run->exemplar_of[a] < 0 ? NULL : &run->exemplar[run->exemplar_of[a]];
+      run->level.view[a].variance = ex ? &ex->variance : NULL;
+      run->level.view[a].index = ex && ex->index.patch != 0 ? &ex->index : NULL;
+    }
   return TS_OK;
 }
 

@@ -56,7 +56,6 @@ ts_solid_variance_map_build (const TsImage *ex, size_t radius, bool coarse, TsSo
   float *sorted;
 
   ts_solid_variance_map_free (map);
-  map->radius = radius;
   map->flat = TS_SOLID_FLAT_VARIANCE;
   if (w <= 2 * radius || h <= 2 * radius)
     return TS_OK; /* no whole neighbourhood: no match to weigh */
