@@ -60,6 +60,7 @@ typedef struct
   size_t       xyz[3];    /* the voxel                            */
   const uint8_t *batch_of;
   uint8_t      batch;
+  const float *face[TS_SOLID_AXES][2]; /* see face_neighbours, if continuing */
 } Votes;
 
 /* Strictly heavier wins, so among equal weights the first vote in the
@@ -88,26 +89,39 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
     }
 }
 
-/* The voxel's four in-slice neighbours across `axis` that lie outside
- * the current batch; returns how many. */
+/* The voxel's six face neighbours, once per voxel (each orientation
+ * uses four of them): their values, NULL for those in the current batch. */
+static void
+face_neighbours (const TsSolidLevel *level, Votes *v)
+{
+  size_t n = level->n;
+
+  for (int d = 0; d < TS_SOLID_AXES; d++)
+    for (int side = 0; side < 2; side++)
+      {
+        size_t q[3] = { v->xyz[0], v->xyz[1], v->xyz[2] }, qi;
+        q[d] = ts_border_index ((ptrdiff_t) q[d] + (side ? 1 : -1), n, level->periodic);
+        qi = (q[2] * n + q[1]) * n + q[0];
+        v->face[d][side] = v->batch_of[qi] == v->batch ? NULL : level->value + qi * TS_CHANNELS;
+      }
+}
+
+/* The face neighbours in the slice across `axis`, with their steps in
+ * the exemplar's axes; returns how many. */
 static size_t
-stable_neighbours (const TsSolidLevel *level, int axis, const size_t xyz[3],
-                   const uint8_t *batch_of, uint8_t batch, Neighbour next[4])
+slice_neighbours (const Votes *v, int axis, Neighbour next[4])
 {
   static const int step[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
-  size_t n = level->n, count = 0;
-  int u, v;
+  size_t count = 0;
+  int u, w;
 
-  ts_solid_plane_axes (axis, &u, &v);
+  ts_solid_plane_axes (axis, &u, &w);
   for (int k = 0; k < 4; k++)
     {
-      size_t q[3] = { xyz[0], xyz[1], xyz[2] }, qi;
-      q[u] = ts_border_index ((ptrdiff_t) q[u] + step[k][0], n, level->periodic);
-      q[v] = ts_border_index ((ptrdiff_t) q[v] + step[k][1], n, level->periodic);
-      qi = (q[2] * n + q[1]) * n + q[0];
-      if (batch_of[qi] == batch)
+      const float *value = v->face[k < 2 ? u : w][k & 1];
+      if (!value)
         continue;
-      next[count].value = level->value + qi * TS_CHANNELS;
+      next[count].value = value;
       next[count].dx = step[k][0];
       next[count].dy = step[k][1];
       count++;
@@ -143,8 +157,7 @@ collect_axis (Votes *v, const TsSolidLevel *level, int axis, const TsAxisGrid *g
   const TsSolidView *view = &level->view[axis];
   size_t ew = view->exemplar->width, n = level->n, cu = gu->centres, cv = gv->centres;
   Neighbour next[4];
-  size_t neighbours = level->continuation > 0.0f
-                      ? stable_neighbours (level, axis, v->xyz, v->batch_of, v->batch, next) : 0;
+  size_t neighbours = level->continuation > 0.0f ? slice_neighbours (v, axis, next) : 0;
 
   for (size_t iv = gv->virtual_start[pv]; iv < gv->virtual_start[pv + 1]; iv++)
     {
@@ -203,6 +216,8 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
 {
   v->current = current;
   memcpy (v->xyz, xyz, sizeof v->xyz);
+  if (level->continuation > 0.0f)
+    face_neighbours (level, v);
   v->weight = 0.0f;
   v->source = -1;
   v->axis = 0;
