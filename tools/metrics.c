@@ -397,29 +397,35 @@ ts_measure_sharpness (const TsImage *exemplar, const TsImage *result, double *sh
   return TS_MEASURE_OK;
 }
 
+/* Sobel gradient of L at inner pixel (x, y): rather than central
+ * differences, as its direction error is far smaller, so an isotropic
+ * texture reads as isotropic. */
+static void
+sobel_l (const TsImage *image, size_t x, size_t y, double *gx, double *gy)
+{
+  const float *p = image->pixels + (y * image->width + x) * TS_CHANNELS;
+  ptrdiff_t row = (ptrdiff_t) (image->width * TS_CHANNELS);
+
+  *gx = (p[-row + TS_CHANNELS] + 2.0 * p[TS_CHANNELS] + p[row + TS_CHANNELS])
+        - (p[-row - TS_CHANNELS] + 2.0 * p[-TS_CHANNELS] + p[row - TS_CHANNELS]);
+  *gy = (p[row - TS_CHANNELS] + 2.0 * p[row] + p[row + TS_CHANNELS])
+        - (p[-row - TS_CHANNELS] + 2.0 * p[-row] + p[-row + TS_CHANNELS]);
+}
+
 TsMeasureStatus
 ts_measure_axis_edge_share (const TsImage *image, double *share)
 {
-  size_t w, h;
   /* Both gradient components compared to tan(10 deg) of the other. */
   double tan_limit = tan (TS_AXIS_EDGE_DEGREES * 3.14159265358979323846 / 180.0), axial = 0.0, total = 0.0;
 
   *share = NAN;
   if (!big_enough (image))
     return TS_MEASURE_TOO_SMALL;
-  w = image->width;
-  h = image->height;
-  /* Sobel rather than central differences: its direction error is far
-   * smaller, so an isotropic texture reads as isotropic. */
-  for (size_t y = 1; y + 1 < h; y++)
-    for (size_t x = 1; x + 1 < w; x++)
+  for (size_t y = 1; y + 1 < image->height; y++)
+    for (size_t x = 1; x + 1 < image->width; x++)
       {
-        const float *p = image->pixels + (y * w + x) * TS_CHANNELS;
-        ptrdiff_t row = (ptrdiff_t) (w * TS_CHANNELS);
-        double gx = (p[-row + TS_CHANNELS] + 2.0 * p[TS_CHANNELS] + p[row + TS_CHANNELS])
-                    - (p[-row - TS_CHANNELS] + 2.0 * p[-TS_CHANNELS] + p[row - TS_CHANNELS]);
-        double gy = (p[row - TS_CHANNELS] + 2.0 * p[row] + p[row + TS_CHANNELS])
-                    - (p[-row - TS_CHANNELS] + 2.0 * p[-row] + p[-row + TS_CHANNELS]);
+        double gx, gy;
+        sobel_l (image, x, y, &gx, &gy);
         double energy = gx * gx + gy * gy, ax = fabs (gx), ay = fabs (gy);
         total += energy;
         if (ay <= tan_limit * ax || ax <= tan_limit * ay)
@@ -431,12 +437,44 @@ ts_measure_axis_edge_share (const TsImage *image, double *share)
 }
 
 TsMeasureStatus
+ts_measure_anisotropy (const TsImage *image, double *anisotropy)
+{
+  /* Energy-weighted means of (cos 2t, sin 2t) and (cos 4t, sin 4t) over
+   * the gradient angles t: the first is large when edges share one
+   * orientation, the second also when they share two orthogonal ones (a
+   * grid, which the first cancels). Both vanish on isotropic images. */
+  double c2 = 0.0, s2 = 0.0, c4 = 0.0, s4 = 0.0, total = 0.0;
+
+  *anisotropy = NAN;
+  if (!big_enough (image))
+    return TS_MEASURE_TOO_SMALL;
+  for (size_t y = 1; y + 1 < image->height; y++)
+    for (size_t x = 1; x + 1 < image->width; x++)
+      {
+        double gx, gy;
+        sobel_l (image, x, y, &gx, &gy);
+        double xx = gx * gx, yy = gy * gy, energy = xx + yy;
+        if (energy <= 0.0)
+          continue;
+        c2 += xx - yy;
+        s2 += 2.0 * gx * gy;
+        c4 += (xx * xx - 6.0 * xx * yy + yy * yy) / energy;
+        s4 += 4.0 * gx * gy * (xx - yy) / energy;
+        total += energy;
+      }
+  if (total > 0.0)
+    *anisotropy = fmax (sqrt (c2 * c2 + s2 * s2), sqrt (c4 * c4 + s4 * s4)) / total;
+  return TS_MEASURE_OK;
+}
+
+TsMeasureStatus
 ts_measure_all (const TsImage *exemplar, const TsImage *result, bool wrap_x, bool wrap_y,
                 TsMeasures *out)
 {
   TsMeasureStatus s;
   out->coherence = out->completeness = out->seam = out->copy = out->sharpness = NAN;
   out->axis_edges = out->axis_edges_exemplar = out->axis_edges_result = NAN;
+  out->anisotropy_exemplar = NAN;
   s = ts_measure_coherence (exemplar, result, wrap_x, wrap_y, &out->coherence, &out->seam);
   if (s == TS_MEASURE_OK)
     s = ts_measure_completeness (exemplar, result, wrap_x, wrap_y, &out->completeness);
@@ -448,6 +486,8 @@ ts_measure_all (const TsImage *exemplar, const TsImage *result, bool wrap_x, boo
     s = ts_measure_axis_edge_share (exemplar, &out->axis_edges_exemplar);
   if (s == TS_MEASURE_OK)
     s = ts_measure_axis_edge_share (result, &out->axis_edges_result);
+  if (s == TS_MEASURE_OK)
+    s = ts_measure_anisotropy (exemplar, &out->anisotropy_exemplar);
   if (s == TS_MEASURE_OK && out->axis_edges_exemplar > 0.0)
     out->axis_edges = out->axis_edges_result / out->axis_edges_exemplar;
   return s;

@@ -65,6 +65,7 @@ typedef struct
   double axis_edges;          /* result's share over the exemplar's */
   double axis_edges_exemplar; /* the shares themselves               */
   double axis_edges_result;
+  double anisotropy_exemplar; /* see ts_measure_anisotropy            */
 } TsMeasures;
 
 /* Coherence (and seam, if an axis wraps; else NAN). */
@@ -84,6 +85,14 @@ TsMeasureStatus ts_measure_sharpness (const TsImage *exemplar, const TsImage *re
 /* Share of `image`'s gradient energy within TS_AXIS_EDGE_DEGREES of the
  * axes (NAN for a flat image). */
 TsMeasureStatus ts_measure_axis_edge_share (const TsImage *image, double *share);
+
+/* How strongly `image`'s edges favour some orientations: the larger of
+ * the second and fourth circular moments of its gradient angles,
+ * weighted by gradient energy. 0 when the energy is spread evenly over
+ * all directions, 1 when all of it points one way or along a grid's two
+ * (NAN for a flat image). The axis-edge share of a solid's slices
+ * compares like with like only on exemplars near 0. */
+TsMeasureStatus ts_measure_anisotropy (const TsImage *image, double *anisotropy);
 
 /* All of the above. `wrap_x` / `wrap_y`: the result tiles along that axis
  * (texsynth-measure --tileable). */

@@ -40,6 +40,9 @@ static const char usage_text[] =
   "                10 degrees of the image axes, over EXEMPLAR's; > 1 = more\n"
   "                axis-aligned edges (blocks, seams, dashes) than the exemplar.\n"
   "                --json also gives both shares (axis_edges_exemplar, _result)\n"
+  "                and anisotropy_exemplar: how strongly EXEMPLAR's edges favour\n"
+  "                some orientations (0 = isotropic, 1 = all one way or on a\n"
+  "                grid); axis-edges is meant for exemplars near 0\n"
   "\n"
   "Both images must be at least 7x7 pixels. Exit status: 0 on success,\n"
   "2 on bad arguments or images that cannot be read or are too small.\n";
@@ -175,6 +178,7 @@ main (int argc, char **argv)
       {
         print_value ("axis_edges_exemplar", m.axis_edges_exemplar, json, &first);
         print_value ("axis_edges_result", m.axis_edges_result, json, &first);
+        print_value ("anisotropy_exemplar", m.anisotropy_exemplar, json, &first);
       }
     if (json)
       printf (", \"tileable\": \"%s\", \"exemplar_size\": [%zu, %zu], "

@@ -68,6 +68,8 @@ def main():
         check(m["copy"] > 0.99, "%s self copy %r" % (n, m["copy"]))
         check(abs(m["sharpness"] - 1) < 0.01, "%s self sharpness %r" % (n, m["sharpness"]))
         check(m["seam"] is None and m["tileable"] == "none", "%s: seam without --tileable" % n)
+        check(0.0 <= m["anisotropy_exemplar"] <= 1.0,
+              "%s anisotropy %r outside [0, 1]" % (n, m["anisotropy_exemplar"]))
 
     # --- text output format ---------------------------------------------
     first = ex[names[0]]

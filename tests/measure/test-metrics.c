@@ -406,6 +406,33 @@ test_axis_edges (void)
   free (flat.pixels);
 }
 
+/* Anisotropy: stripes of any direction read 1, a grid of axis-aligned
+ * squares nearly so (two orthogonal orientations), rings 0. */
+static void
+test_anisotropy (void)
+{
+  TsImage tilted = make_stripes (64, 25.0, false), rings = make_stripes (96, 0.0, true);
+  TsImage grid_image = new_image (64, 64), flat = new_image (10, 10);
+  double a;
+
+  for (size_t y = 0; y < 64; y++)
+    for (size_t x = 0; x < 64; x++)
+      px (&grid_image, x, y)[0] = ((x / 8 + y / 8) & 1) ? 80.0f : 20.0f;
+  CHECK (ts_measure_anisotropy (&tilted, &a) == TS_MEASURE_OK && a > 0.95,
+         "25-degree stripes: anisotropy %g, want 1", a);
+  /* Near 1: only the squares' corners give diagonal gradients (0.86). */
+  CHECK (ts_measure_anisotropy (&grid_image, &a) == TS_MEASURE_OK && a > 0.8,
+         "checkerboard: anisotropy %g, want near 1", a);
+  CHECK (ts_measure_anisotropy (&rings, &a) == TS_MEASURE_OK && a < 0.05,
+         "rings: anisotropy %g, want 0", a);
+  CHECK (ts_measure_anisotropy (&flat, &a) == TS_MEASURE_OK && isnan (a),
+         "flat: anisotropy %g, want NaN", a);
+  free (tilted.pixels);
+  free (rings.pixels);
+  free (grid_image.pixels);
+  free (flat.pixels);
+}
+
 int
 main (void)
 {
@@ -438,6 +465,7 @@ main (void)
   test_copy ();
   test_sharpness_and_errors ();
   test_axis_edges ();
+  test_anisotropy ();
 
 #ifdef _OPENMP
   /* Same figures with any number of threads. */
