@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #ifdef _OPENMP
 #define TS_OMP(x) _Pragma (#x)
@@ -397,74 +398,71 @@ ts_measure_sharpness (const TsImage *exemplar, const TsImage *result, double *sh
   return TS_MEASURE_OK;
 }
 
-/* Sobel gradient of L at inner pixel (x, y): rather than central
- * differences, as its direction error is far smaller, so an isotropic
- * texture reads as isotropic. */
-static void
-sobel_l (const TsImage *image, size_t x, size_t y, double *gx, double *gy)
+/* Sums over the inner pixels of the Sobel gradient of L (rather than
+ * central differences: its direction error is far smaller, so an
+ * isotropic texture reads as isotropic), with t the gradient's angle:
+ * its energy, the energy within TS_AXIS_EDGE_DEGREES of the axes, and
+ * the energy-weighted (cos 2t, sin 2t) and (cos 4t, sin 4t). */
+typedef struct
 {
-  const float *p = image->pixels + (y * image->width + x) * TS_CHANNELS;
+  double total, axial, c2, s2, c4, s4;
+} GradientSums;
+
+static TsMeasureStatus
+gradient_sums (const TsImage *image, GradientSums *g)
+{
+  /* Both gradient components compared to tan(10 deg) of the other. */
+  double tan_limit = tan (TS_AXIS_EDGE_DEGREES * 3.14159265358979323846 / 180.0);
   ptrdiff_t row = (ptrdiff_t) (image->width * TS_CHANNELS);
 
-  *gx = (p[-row + TS_CHANNELS] + 2.0 * p[TS_CHANNELS] + p[row + TS_CHANNELS])
-        - (p[-row - TS_CHANNELS] + 2.0 * p[-TS_CHANNELS] + p[row - TS_CHANNELS]);
-  *gy = (p[row - TS_CHANNELS] + 2.0 * p[row] + p[row + TS_CHANNELS])
-        - (p[-row - TS_CHANNELS] + 2.0 * p[-row] + p[-row + TS_CHANNELS]);
+  memset (g, 0, sizeof *g);
+  if (!big_enough (image))
+    return TS_MEASURE_TOO_SMALL;
+  for (size_t y = 1; y + 1 < image->height; y++)
+    for (size_t x = 1; x + 1 < image->width; x++)
+      {
+        const float *p = image->pixels + (y * image->width + x) * TS_CHANNELS;
+        double gx = (p[-row + TS_CHANNELS] + 2.0 * p[TS_CHANNELS] + p[row + TS_CHANNELS])
+                    - (p[-row - TS_CHANNELS] + 2.0 * p[-TS_CHANNELS] + p[row - TS_CHANNELS]);
+        double gy = (p[row - TS_CHANNELS] + 2.0 * p[row] + p[row + TS_CHANNELS])
+                    - (p[-row - TS_CHANNELS] + 2.0 * p[-row] + p[-row + TS_CHANNELS]);
+        double xx = gx * gx, yy = gy * gy, energy = xx + yy;
+        if (energy <= 0.0)
+          continue;
+        g->total += energy;
+        if (fabs (gy) <= tan_limit * fabs (gx) || fabs (gx) <= tan_limit * fabs (gy))
+          g->axial += energy;
+        g->c2 += xx - yy;
+        g->s2 += 2.0 * gx * gy;
+        g->c4 += (xx * xx - 6.0 * xx * yy + yy * yy) / energy;
+        g->s4 += 4.0 * gx * gy * (xx - yy) / energy;
+      }
+  return TS_MEASURE_OK;
 }
 
 TsMeasureStatus
 ts_measure_axis_edge_share (const TsImage *image, double *share)
 {
-  /* Both gradient components compared to tan(10 deg) of the other. */
-  double tan_limit = tan (TS_AXIS_EDGE_DEGREES * 3.14159265358979323846 / 180.0), axial = 0.0, total = 0.0;
+  GradientSums g;
+  TsMeasureStatus status = gradient_sums (image, &g);
 
-  *share = NAN;
-  if (!big_enough (image))
-    return TS_MEASURE_TOO_SMALL;
-  for (size_t y = 1; y + 1 < image->height; y++)
-    for (size_t x = 1; x + 1 < image->width; x++)
-      {
-        double gx, gy;
-        sobel_l (image, x, y, &gx, &gy);
-        double energy = gx * gx + gy * gy, ax = fabs (gx), ay = fabs (gy);
-        total += energy;
-        if (ay <= tan_limit * ax || ax <= tan_limit * ay)
-          axial += energy;
-      }
-  if (total > 0.0)
-    *share = axial / total;
-  return TS_MEASURE_OK;
+  *share = g.total > 0.0 ? g.axial / g.total : NAN;
+  return status;
 }
 
+/* The second moment is large when edges share one orientation, the
+ * fourth also when they share two orthogonal ones (a grid, which the
+ * second cancels); both vanish on isotropic images. */
 TsMeasureStatus
 ts_measure_anisotropy (const TsImage *image, double *anisotropy)
 {
-  /* Energy-weighted means of (cos 2t, sin 2t) and (cos 4t, sin 4t) over
-   * the gradient angles t: the first is large when edges share one
-   * orientation, the second also when they share two orthogonal ones (a
-   * grid, which the first cancels). Both vanish on isotropic images. */
-  double c2 = 0.0, s2 = 0.0, c4 = 0.0, s4 = 0.0, total = 0.0;
+  GradientSums g;
+  TsMeasureStatus status = gradient_sums (image, &g);
 
-  *anisotropy = NAN;
-  if (!big_enough (image))
-    return TS_MEASURE_TOO_SMALL;
-  for (size_t y = 1; y + 1 < image->height; y++)
-    for (size_t x = 1; x + 1 < image->width; x++)
-      {
-        double gx, gy;
-        sobel_l (image, x, y, &gx, &gy);
-        double xx = gx * gx, yy = gy * gy, energy = xx + yy;
-        if (energy <= 0.0)
-          continue;
-        c2 += xx - yy;
-        s2 += 2.0 * gx * gy;
-        c4 += (xx * xx - 6.0 * xx * yy + yy * yy) / energy;
-        s4 += 4.0 * gx * gy * (xx - yy) / energy;
-        total += energy;
-      }
-  if (total > 0.0)
-    *anisotropy = fmax (sqrt (c2 * c2 + s2 * s2), sqrt (c4 * c4 + s4 * s4)) / total;
-  return TS_MEASURE_OK;
+  *anisotropy = g.total > 0.0
+                  ? fmax (sqrt (g.c2 * g.c2 + g.s2 * g.s2), sqrt (g.c4 * g.c4 + g.s4 * g.s4)) / g.total
+                  : NAN;
+  return status;
 }
 
 TsMeasureStatus
