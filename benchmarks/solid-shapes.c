@@ -13,7 +13,9 @@
  * and the diagonal. -i sets the iterations per level and pass, -p the
  * large neighbourhood's side (0 = the schedule's). The exemplar's
  * anisotropy (metrics.h) says whether the axis-edges aim applies: only
- * near 0 does an isotropic solid's slice compare like with like.
+ * near 0 does an isotropic solid's slice compare like with like. The
+ * share of voxels copied from each orientation's votes shows when one
+ * orientation dominates (its layers streak the other slices).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "metrics.h"
@@ -112,6 +114,7 @@ main (int argc, char **argv)
       const char *name = argv[i];
       TsImage exemplar = { n, n, NULL }, slice = { n, n, NULL };
       float *truth = NULL, *ours = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+      TsSolidSource *sources = NULL;
       SliceFigures f;
       TsSolidParams params;
       TsError error;
@@ -136,6 +139,7 @@ main (int argc, char **argv)
           continue;
         }
       slice.pixels = malloc (n * n * TS_CHANNELS * sizeof (float));
+      sources = malloc (n * n * n * sizeof (TsSolidSource));
       if (strstr (name, ".png") ? !load_crop (name, n, &exemplar) : false)
         status = 1;
       else if (!strstr (name, ".png"))
@@ -167,8 +171,10 @@ main (int argc, char **argv)
           params.seed = seed;
           params.max_iterations = iterations;
           params.patch_size = patch;
+          params.record_sources = true;
           start = now ();
-          if (ts_synthesize_solid (&params, ex3, ours, NULL, NULL, &error) != TS_OK)
+          if (!sources || ts_synthesize_solid_with_sources (&params, ex3, ours, sources, NULL, NULL,
+                                                            &error) != TS_OK)
             {
               fprintf (stderr, "solid-shapes: %s\n", error.message);
               status = 1;
@@ -176,9 +182,14 @@ main (int argc, char **argv)
           else
             {
               double anisotropy = NAN;
+              size_t wins[3] = { 0, 0, 0 }, voxels = n * n * n;
               ts_measure_anisotropy (&exemplar, &anisotropy);
-              printf ("%-9s %zu^3 synthesised in %.2f s (exemplar anisotropy %.3f)\n", base, n,
-                      now () - start, anisotropy);
+              for (size_t p = 0; p < voxels; p++)
+                wins[ts_solid_source_axis (sources[p]) % 3]++;
+              printf ("%-9s %zu^3 synthesised in %.2f s (exemplar anisotropy %.3f; voxels copied "
+                      "by x %.0f %%, y %.0f %%, z %.0f %%)\n", base, n, now () - start, anisotropy,
+                      100.0 * (double) wins[0] / (double) voxels, 100.0 * (double) wins[1] / (double) voxels,
+                      100.0 * (double) wins[2] / (double) voxels);
               /* exemplar | truth across x | ours across x, y, z, diagonal */
               TsImage strip = { 6 * (n + 4) - 4, n, NULL };
               if (dir)
@@ -209,6 +220,7 @@ main (int argc, char **argv)
       free (slice.pixels);
       free (truth);
       free (ours);
+      free (sources);
     }
   return status;
 }
