@@ -181,13 +181,13 @@ main (int argc, char **argv)
             }
           else
             {
-              double anisotropy = NAN;
+              double seconds = now () - start, anisotropy = NAN;
               size_t wins[3] = { 0, 0, 0 }, voxels = n * n * n;
               ts_measure_anisotropy (&exemplar, &anisotropy);
               for (size_t p = 0; p < voxels; p++)
                 wins[ts_solid_source_axis (sources[p]) % 3]++;
               printf ("%-9s %zu^3 synthesised in %.2f s (exemplar anisotropy %.3f; voxels copied "
-                      "by x %.0f %%, y %.0f %%, z %.0f %%)\n", base, n, now () - start, anisotropy,
+                      "by x %.0f %%, y %.0f %%, z %.0f %%)\n", base, n, seconds, anisotropy,
                       100.0 * (double) wins[0] / (double) voxels, 100.0 * (double) wins[1] / (double) voxels,
                       100.0 * (double) wins[2] / (double) voxels);
               /* exemplar | truth across x | ours across x, y, z, diagonal */

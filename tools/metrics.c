@@ -440,28 +440,40 @@ gradient_sums (const TsImage *image, GradientSums *g)
   return TS_MEASURE_OK;
 }
 
+static double
+axis_share_of (const GradientSums *g)
+{
+  return g->total > 0.0 ? g->axial / g->total : NAN;
+}
+
+/* The second moment is large when edges share one orientation, the
+ * fourth also when they share two orthogonal ones (a grid, which the
+ * second cancels); both vanish on isotropic images. */
+static double
+anisotropy_of (const GradientSums *g)
+{
+  return g->total > 0.0
+           ? fmax (sqrt (g->c2 * g->c2 + g->s2 * g->s2), sqrt (g->c4 * g->c4 + g->s4 * g->s4)) / g->total
+           : NAN;
+}
+
 TsMeasureStatus
 ts_measure_axis_edge_share (const TsImage *image, double *share)
 {
   GradientSums g;
   TsMeasureStatus status = gradient_sums (image, &g);
 
-  *share = g.total > 0.0 ? g.axial / g.total : NAN;
+  *share = axis_share_of (&g);
   return status;
 }
 
-/* The second moment is large when edges share one orientation, the
- * fourth also when they share two orthogonal ones (a grid, which the
- * second cancels); both vanish on isotropic images. */
 TsMeasureStatus
 ts_measure_anisotropy (const TsImage *image, double *anisotropy)
 {
   GradientSums g;
   TsMeasureStatus status = gradient_sums (image, &g);
 
-  *anisotropy = g.total > 0.0
-                  ? fmax (sqrt (g.c2 * g.c2 + g.s2 * g.s2), sqrt (g.c4 * g.c4 + g.s4 * g.s4)) / g.total
-                  : NAN;
+  *anisotropy = anisotropy_of (&g);
   return status;
 }
 
@@ -481,11 +493,15 @@ ts_measure_all (const TsImage *exemplar, const TsImage *result, bool wrap_x, boo
   if (s == TS_MEASURE_OK)
     s = ts_measure_sharpness (exemplar, result, &out->sharpness);
   if (s == TS_MEASURE_OK)
-    s = ts_measure_axis_edge_share (exemplar, &out->axis_edges_exemplar);
+    {
+      /* One pass over the exemplar serves its share and its anisotropy. */
+      GradientSums g;
+      s = gradient_sums (exemplar, &g);
+      out->axis_edges_exemplar = axis_share_of (&g);
+      out->anisotropy_exemplar = anisotropy_of (&g);
+    }
   if (s == TS_MEASURE_OK)
     s = ts_measure_axis_edge_share (result, &out->axis_edges_result);
-  if (s == TS_MEASURE_OK)
-    s = ts_measure_anisotropy (exemplar, &out->anisotropy_exemplar);
   if (s == TS_MEASURE_OK && out->axis_edges_exemplar > 0.0)
     out->axis_edges = out->axis_edges_result / out->axis_edges_exemplar;
   return s;
