@@ -51,18 +51,8 @@ write_u8(small_map, 32, 32, crop)
 
 
 def save(path, map_path=None, aux=None, **props):
-    """Run texsynth:volume-save; return its warnings."""
-    graph = Gegl.Node()
-    sink = node(graph, SAVE, path=path, **dict(SETTINGS, **props))
-    volops.loader(graph, bark).connect_to("output", sink, "input")
-    if map_path:
-        volops.loader(graph, map_path).connect_to("output", sink, "aux3")
-    if aux:
-        volops.loader(graph, aux).connect_to("output", sink, "aux")
-    text = [""]
-    with volops.captured_stderr(text):
-        sink.process()
-    return volops.op_warnings(text[0], SAVE)
+    """Run texsynth:volume-save on bark; return its warnings."""
+    return volops.save_volume(path, bark, SETTINGS, aux=aux, aux3=map_path, **props)
 
 
 def slice_u8(map_path=None, **props):

@@ -28,15 +28,7 @@ bark, brick = tsops.exemplar("bark.png"), tsops.exemplar("brick.png")
 
 def save(path, source=bark, aux=None, **props):
     """Run texsynth:volume-save; return its warnings."""
-    graph = Gegl.Node()
-    sink = node(graph, SAVE, path=path, **dict(SETTINGS, **props))
-    volops.loader(graph, source).connect_to("output", sink, "input")
-    if aux:
-        volops.loader(graph, aux).connect_to("output", sink, "aux")
-    text = [""]
-    with volops.captured_stderr(text):
-        sink.process()
-    return volops.op_warnings(text[0], SAVE)
+    return volops.save_volume(path, source, SETTINGS, aux=aux, **props)
 
 
 def slice_u8(**props):

@@ -94,6 +94,21 @@ def captured_stderr(store):
             sys.stderr.write(store[0])
 
 
+def save_volume(path, source, settings, aux=None, aux3=None, **props):
+    """Run texsynth:volume-save on `source`, with exemplars on the aux
+    pads given; return its warnings."""
+    graph = tsops.gegl().Node()
+    sink = node(graph, SAVE, path=path, **dict(settings, **props))
+    loader(graph, source).connect_to("output", sink, "input")
+    for pad, pad_source in (("aux", aux), ("aux3", aux3)):
+        if pad_source:
+            loader(graph, pad_source).connect_to("output", sink, pad)
+    text = [""]
+    with captured_stderr(text):
+        sink.process()
+    return op_warnings(text[0], SAVE)
+
+
 def cache_misses(text):
     return sum(1 for line in text.splitlines() if "texsynth: volume cache miss" in line)
 
