@@ -162,7 +162,12 @@ main (int argc, char **argv)
               free (rgb);
             }
         }
-      if (status == 0 && ours && slice.pixels && exemplar.pixels)
+      if (status == 0 && (!ours || !slice.pixels || !exemplar.pixels || !sources))
+        {
+          fprintf (stderr, "solid-shapes: %s: out of memory\n", name);
+          status = 1;
+        }
+      if (status == 0)
         {
           const TsImage *ex3[3] = { &exemplar, &exemplar, &exemplar };
           const char *base = strrchr (name, '/') ? strrchr (name, '/') + 1 : name;
@@ -173,8 +178,8 @@ main (int argc, char **argv)
           params.patch_size = patch;
           params.record_sources = true;
           start = now ();
-          if (!sources || ts_synthesize_solid_with_sources (&params, ex3, ours, sources, NULL, NULL,
-                                                            &error) != TS_OK)
+          if (ts_synthesize_solid_with_sources (&params, ex3, ours, sources, NULL, NULL, &error)
+              != TS_OK)
             {
               fprintf (stderr, "solid-shapes: %s\n", error.message);
               status = 1;
