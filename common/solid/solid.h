@@ -42,6 +42,8 @@ typedef struct
   float                *excess;      /* histogram excess per exemplar pixel, or NULL */
   const TsSolidIndex   *index;       /* all neighbourhoods of the pass's size, or NULL */
   const TsSolidVarianceMap *variance; /* of the pass's neighbourhoods   */
+  float                *position_count; /* scratch: copies per exemplar pixel
+                                           (position-histogram.c), or NULL */
 } TsSolidView;
 
 typedef struct
@@ -55,6 +57,8 @@ typedef struct
                               copies (orientation and index); else NULL */
   TsSolidView  view[TS_SOLID_AXES];
   float        continuation; /* E-step weight per continued neighbour (estep.c) */
+  float        position_weight; /* of the position histogram's excess, 0 = off;
+                                   needs `chosen` (position-histogram.c) */
 } TsSolidLevel;
 
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust
@@ -139,6 +143,10 @@ void ts_solid_histogram_apply (TsSolidHistogram *h, TsSolidHistogramDelta delta)
  * how far the volume's density in the pixel's bin exceeds the target
  * (0 = not over-represented). */
 void ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level);
+
+/* Adds to every exemplar pixel's excess (views with one) position_weight
+ * times how much more often than uniformly `chosen` copies it. */
+void ts_solid_position_excess (TsSolidLevel *level);
 
 /* --- E-step ---------------------------------------------------------------- */
 
