@@ -33,15 +33,15 @@ ts_solid_position_excess (TsSolidLevel *level)
       const TsSolidView *view = &level->view[a];
       if (view->exemplar && view->position_count && owner_of (level, a) == a)
         memset (view->position_count, 0,
-                ts_image_pixel_count (view->exemplar) * sizeof (float));
+                ts_image_pixel_count (view->exemplar) * sizeof (uint32_t));
     }
   for (size_t p = 0; p < voxels; p++)
     {
       int a = owner_of (level, ts_solid_source_axis (level->chosen[p]));
-      float *count = level->view[a].position_count;
+      uint32_t *count = level->view[a].position_count;
       if (count)
         {
-          count[ts_solid_source_index (level->chosen[p])] += 1.0f;
+          count[ts_solid_source_index (level->chosen[p])]++;
           total[a] += 1.0;
         }
     }
@@ -56,7 +56,7 @@ ts_solid_position_excess (TsSolidLevel *level)
       size_t pixels = ts_image_pixel_count (view->exemplar);
       for (size_t i = 0; i < pixels; i++)
         {
-          float over = view->position_count[i] / uniform - 1.0f;
+          float over = (float) view->position_count[i] / uniform - 1.0f;
           if (over > 0.0f)
             view->excess[i] += level->position_weight * over;
         }

@@ -42,7 +42,7 @@ typedef struct
   float                *excess;      /* histogram excess per exemplar pixel, or NULL */
   const TsSolidIndex   *index;       /* all neighbourhoods of the pass's size, or NULL */
   const TsSolidVarianceMap *variance; /* of the pass's neighbourhoods   */
-  float                *position_count; /* scratch: copies per exemplar pixel
+  uint32_t             *position_count; /* scratch: copies per exemplar pixel
                                            (position-histogram.c), or NULL */
 } TsSolidView;
 

@@ -51,7 +51,7 @@ typedef struct
   int32_t        *opaque;
   size_t          opaque_count;
   float          *excess;
-  float          *position_count;
+  uint32_t       *position_count;
   TsSolidIndex    index;      /* all neighbourhoods of the current pass */
   TsSolidVarianceMap variance; /* their colour variances                */
 } Exemplar;
@@ -262,7 +262,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       free (ex->position_count);
       ex->opaque = malloc (pixels * sizeof (int32_t));
       ex->excess = malloc (pixels * sizeof (float));
-      ex->position_count = malloc (pixels * sizeof (float));
+      ex->position_count = malloc (pixels * sizeof (uint32_t));
       if (!ex->opaque || !ex->excess || !ex->position_count)
         return TS_ERROR_OUT_OF_MEMORY;
       ex->opaque_count = 0;
