@@ -22,10 +22,7 @@ bin_of (const TsSolidHistogram *h, int channel, float v)
 static bool
 first_use (const TsSolidLevel *level, int a)
 {
-  for (int b = 0; b < a; b++)
-    if (level->view[b].exemplar == level->view[a].exemplar)
-      return false;
-  return level->view[a].exemplar != NULL;
+  return level->view[a].exemplar != NULL && ts_solid_view_owner (level, a) == a;
 }
 
 void

@@ -11,33 +11,24 @@
 
 #include <string.h>
 
-/* The first orientation using the same exemplar as `a`: its count and
- * excess arrays serve every orientation that shares the exemplar. */
-static int
-owner_of (const TsSolidLevel *level, int a)
-{
-  for (int b = 0; b < a; b++)
-    if (level->view[b].exemplar == level->view[a].exemplar)
-      return b;
-  return a;
-}
-
 void
 ts_solid_position_excess (TsSolidLevel *level)
 {
   size_t voxels = level->n * level->n * level->n;
   double total[TS_SOLID_AXES] = { 0.0, 0.0, 0.0 };
+  int owner[TS_SOLID_AXES];
 
   for (int a = 0; a < TS_SOLID_AXES; a++)
     {
       const TsSolidView *view = &level->view[a];
-      if (view->exemplar && view->position_count && owner_of (level, a) == a)
+      owner[a] = ts_solid_view_owner (level, a);
+      if (view->exemplar && view->position_count && owner[a] == a)
         memset (view->position_count, 0,
                 ts_image_pixel_count (view->exemplar) * sizeof (uint32_t));
     }
   for (size_t p = 0; p < voxels; p++)
     {
-      int a = owner_of (level, ts_solid_source_axis (level->chosen[p]));
+      int a = owner[ts_solid_source_axis (level->chosen[p])];
       uint32_t *count = level->view[a].position_count;
       if (count)
         {
@@ -49,7 +40,7 @@ ts_solid_position_excess (TsSolidLevel *level)
     {
       const TsSolidView *view = &level->view[a];
       if (!view->exemplar || !view->excess || !view->position_count
-          || owner_of (level, a) != a || total[a] <= 0.0)
+          || owner[a] != a || total[a] <= 0.0)
         continue;
       /* Uniform use: every opaque pixel copied equally often. */
       float uniform = (float) (total[a] / (double) view->opaque_count);

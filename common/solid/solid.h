@@ -61,6 +61,17 @@ typedef struct
                                    needs `chosen` (position-histogram.c) */
 } TsSolidLevel;
 
+/* The first orientation whose view shows the same exemplar as `axis`'s:
+ * per-exemplar data (histogram counts, excesses) is kept once, there. */
+static inline int
+ts_solid_view_owner (const TsSolidLevel *level, int axis)
+{
+  for (int b = 0; b < axis; b++)
+    if (level->view[b].exemplar == level->view[axis].exemplar)
+      return b;
+  return axis;
+}
+
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust
  * vote weight. */
 typedef struct
