@@ -262,7 +262,12 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
           /* Also when the colour is unchanged: an equal colour may come
            * from another pixel, and aligned maps need the true one. */
           if (level->chosen)
-            level->chosen[p] = ts_solid_source_pack (v.axis, (uint32_t) v.source);
+            {
+              TsSolidSource after = ts_solid_source_pack (v.axis, (uint32_t) v.source);
+              if (level->position_weight > 0.0f && level->chosen[p] != after)
+                ts_solid_position_move (level, level->chosen[p], after);
+              level->chosen[p] = after;
+            }
           chosen = level->view[v.axis].exemplar->pixels + (size_t) v.source * TS_CHANNELS;
           if (memcmp (value, chosen, TS_CHANNELS * sizeof (float)) == 0)
             continue;

@@ -42,8 +42,8 @@ typedef struct
   float                *excess;      /* histogram excess per exemplar pixel, or NULL */
   const TsSolidIndex   *index;       /* all neighbourhoods of the pass's size, or NULL */
   const TsSolidVarianceMap *variance; /* of the pass's neighbourhoods   */
-  uint32_t             *position_count; /* scratch: copies per exemplar pixel
-                                           (position-histogram.c), or NULL */
+  uint32_t             *position_count; /* copies per exemplar pixel in
+                                           `chosen` (position-histogram.c), or NULL */
 } TsSolidView;
 
 typedef struct
@@ -155,8 +155,14 @@ void ts_solid_histogram_apply (TsSolidHistogram *h, TsSolidHistogramDelta delta)
  * (0 = not over-represented). */
 void ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level);
 
+/* Counts into the views' position_count how often `chosen` copies each
+ * exemplar pixel; the E-step then keeps the counts up to date. */
+void ts_solid_position_count (TsSolidLevel *level);
+/* One voxel's copy moves from `before` to `after`; safe from several
+ * threads at once. */
+void ts_solid_position_move (TsSolidLevel *level, TsSolidSource before, TsSolidSource after);
 /* Adds to every exemplar pixel's excess (views with one) position_weight
- * times how much more often than uniformly `chosen` copies it. */
+ * times how much more often than uniformly the counts say it is copied. */
 void ts_solid_position_excess (TsSolidLevel *level);
 
 /* --- E-step ---------------------------------------------------------------- */
@@ -164,7 +170,8 @@ void ts_solid_position_excess (TsSolidLevel *level);
 /* Voxels whose `batch_of` entry equals `batch` become the vote of the
  * best-matched slice neighbourhood covering them (robust weight, lowered
  * by the histogram excess); each orientation's source follows its own
- * best vote, and `chosen` (if any) records the vote. With `histogram`, changes are
+ * best vote, and `chosen` (if any) records the vote; with a position
+ * weight the position counts follow it. With `histogram`, changes are
  * added to `delta`. Returns the number of voxels whose value changed. */
 size_t ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
                        TsSolidMatch *const matches[TS_SOLID_AXES], const uint8_t *batch_of,

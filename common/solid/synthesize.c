@@ -435,6 +435,8 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
 
   if (run->params->histogram_matching)
     ts_solid_histogram_init (&histogram, &run->level);
+  if (run->params->histogram_matching && run->level.position_weight > 0.0f)
+    ts_solid_position_count (&run->level);
   for (size_t pi = 0; pi < plan->passes && status == TS_OK; pi++)
     {
       const TsPass *pass = &plan->pass[pi];
