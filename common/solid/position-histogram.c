@@ -15,23 +15,23 @@
 
 #include <string.h>
 
+/* Views that share an exemplar share its counts (synthesize.c), so a
+ * source's orientation finds them directly. */
 void
 ts_solid_position_count (TsSolidLevel *level)
 {
   size_t voxels = level->n * level->n * level->n;
-  int owner[TS_SOLID_AXES];
 
   for (int a = 0; a < TS_SOLID_AXES; a++)
     {
       const TsSolidView *view = &level->view[a];
-      owner[a] = ts_solid_view_owner (level, a);
-      if (view->exemplar && view->position_count && owner[a] == a)
+      if (view->exemplar && view->position_count && ts_solid_view_owner (level, a) == a)
         memset (view->position_count, 0,
                 ts_image_pixel_count (view->exemplar) * sizeof (uint32_t));
     }
   for (size_t p = 0; p < voxels; p++)
     {
-      uint32_t *count = level->view[owner[ts_solid_source_axis (level->chosen[p])]].position_count;
+      uint32_t *count = level->view[ts_solid_source_axis (level->chosen[p])].position_count;
       if (count)
         count[ts_solid_source_index (level->chosen[p])]++;
     }
@@ -40,8 +40,8 @@ ts_solid_position_count (TsSolidLevel *level)
 void
 ts_solid_position_move (TsSolidLevel *level, TsSolidSource before, TsSolidSource after)
 {
-  uint32_t *from = level->view[ts_solid_view_owner (level, ts_solid_source_axis (before))].position_count;
-  uint32_t *to = level->view[ts_solid_view_owner (level, ts_solid_source_axis (after))].position_count;
+  uint32_t *from = level->view[ts_solid_source_axis (before)].position_count;
+  uint32_t *to = level->view[ts_solid_source_axis (after)].position_count;
   size_t i = ts_solid_source_index (before), j = ts_solid_source_index (after);
 
   if (from)
