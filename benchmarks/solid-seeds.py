@@ -25,6 +25,7 @@ import sys
 
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
                     r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+)")
+SHARP_ALL = re.compile(r"sharp-all ([\d.]+)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -48,6 +49,8 @@ def run_seed(shapes, size, seed, kinds):
             figures[(m.group(1), m.group(2))] = dict(zip(
                 ("coherence", "completeness", "sharpness", "axis", "seam"),
                 map(float, m.group(3, 4, 5, 6, 7))))
+            a = SHARP_ALL.search(line)
+            figures[(m.group(1), m.group(2))]["sharp_all"] = float(a.group(1)) if a else float("nan")
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -70,6 +73,7 @@ def main():
         sys.exit(f"{shapes}: not built (meson setup build && ninja -C build)")
     kinds = args.kinds.split(",")
     values = {(k, a[0]): [] for k in kinds for a in AIMS}
+    sharp_all = {k: [] for k in kinds}
     misses = {k: 0 for k in kinds}
 
     print(f"{args.size}^3, seeds {' '.join(map(str, args.seeds))}: ours / truth for sharpness, "
@@ -87,14 +91,19 @@ def main():
                 if missed(v):
                     marks += mark
             misses[kind] += len(marks)
-            cells.append(f"{kind} {' '.join(row)} {marks or '-'} ({seconds.get(kind, 0):.1f} s)")
+            sharp_all[kind].append(o["sharp_all"] / t["sharp_all"])
+            cells.append(f"{kind} {' '.join(row)} {marks or '-'} [all {sharp_all[kind][-1]:.2f}] "
+                         f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
-    print("columns: sharpness coherence completeness axis-edges seam")
+    print("columns: sharpness coherence completeness axis-edges seam; "
+          "[all: ours / truth sharpness over every x, y and z slice, not an aim]")
     for kind in kinds:
         means = " ".join(f"{sum(values[(kind, a[0])]) / len(args.seeds):.3f}" for a in AIMS)
         worst = " ".join(f"{(min if a[0] == 'sharpness' else max)(values[(kind, a[0])]):.2f}"
                          for a in AIMS)
-        print(f"{kind}: mean {means}; worst {worst}; {misses[kind]} missed")
+        all_mean = sum(sharp_all[kind]) / len(args.seeds)
+        print(f"{kind}: mean {means}; worst {worst}; {misses[kind]} missed; "
+              f"all-slice sharpness mean {all_mean:.3f}, worst {min(sharp_all[kind]):.2f}")
     print(f"missed in all: {sum(misses.values())} of {len(AIMS) * len(kinds) * len(args.seeds)}")
 
 

@@ -10,7 +10,8 @@
  * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [cells|blobs|grains|IMAGE.png]...
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
  * middle slice across x (blank without truth), and ours across x, y, z
- * and the diagonal. -i sets the iterations per level and pass, -p the
+ * and the diagonal. Each row ends with the sharpness averaged over every
+ * x, y and z slice ("sharp-all"), steadier than the middle slices'. -i sets the iterations per level and pass, -p the
  * large neighbourhood's side (0 = the schedule's). The exemplar's
  * anisotropy (metrics.h) says whether the axis-edges aim applies: only
  * near 0 does an isotropic solid's slice compare like with like. The
@@ -40,10 +41,12 @@ static void
 print_row (const char *name, const char *what, const SliceFigures *f)
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
-          "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f\n",
+          "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
+          "sharp-all %.3f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
-          f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1], f->sharpness[2], f->sharpness[3]);
+          f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1], f->sharpness[2], f->sharpness[3],
+          f->all_slices_sharpness);
 }
 
 static void
