@@ -11,12 +11,13 @@
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
  * middle slice across x (blank without truth), and ours across x, y, z
  * and the diagonal. Each row ends with the sharpness averaged over every
- * x, y and z slice ("sharp-all"), steadier than the middle slices'. -i sets the iterations per level and pass, -p the
- * large neighbourhood's side (0 = the schedule's). The exemplar's
- * anisotropy (metrics.h) says whether the axis-edges aim applies: only
- * near 0 does an isotropic solid's slice compare like with like. The
- * share of voxels copied from each orientation's votes shows when one
- * orientation dominates (its layers streak the other slices).
+ * x, y and z slice ("sharp-all"), steadier than the middle slices'. -i
+ * sets the iterations per level and pass, -p the large neighbourhood's
+ * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
+ * whether the axis-edges aim applies: only near 0 does an isotropic
+ * solid's slice compare like with like. The share of voxels copied from
+ * each orientation's votes shows when one orientation dominates (its
+ * layers streak the other slices).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "metrics.h"
