@@ -24,8 +24,7 @@ import subprocess
 import sys
 
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
-                    r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+)")
-SHARP_ALL = re.compile(r"sharp-all ([\d.]+)$")
+                    r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -47,10 +46,8 @@ def run_seed(shapes, size, seed, kinds):
         m = FIGURE.match(line)
         if m:
             figures[(m.group(1), m.group(2))] = dict(zip(
-                ("coherence", "completeness", "sharpness", "axis", "seam"),
-                map(float, m.group(3, 4, 5, 6, 7))))
-            a = SHARP_ALL.search(line)
-            figures[(m.group(1), m.group(2))]["sharp_all"] = float(a.group(1)) if a else float("nan")
+                ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all"),
+                map(float, m.group(3, 4, 5, 6, 7, 8))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))

@@ -46,8 +46,8 @@ print_row (const char *name, const char *what, const SliceFigures *f)
           "sharp-all %.3f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
-          f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1], f->sharpness[2], f->sharpness[3],
-          f->all_slices_sharpness);
+          f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
+          f->sharpness[2], f->sharpness[3], f->all_slices_sharpness);
 }
 
 static void
