@@ -24,7 +24,8 @@ import subprocess
 import sys
 
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
-                    r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+)$")
+                    r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+) "
+                    r"thick ([\d.]+|nan)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -46,8 +47,8 @@ def run_seed(shapes, size, seed, kinds):
         m = FIGURE.match(line)
         if m:
             figures[(m.group(1), m.group(2))] = dict(zip(
-                ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all"),
-                map(float, m.group(3, 4, 5, 6, 7, 8))))
+                ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all", "thick"),
+                map(float, m.group(3, 4, 5, 6, 7, 8, 9))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -71,6 +72,7 @@ def main():
     kinds = args.kinds.split(",")
     values = {(k, a[0]): [] for k in kinds for a in AIMS}
     sharp_all = {k: [] for k in kinds}
+    thick = {k: [] for k in kinds}
     misses = {k: 0 for k in kinds}
 
     print(f"{args.size}^3, seeds {' '.join(map(str, args.seeds))}: ours / truth for sharpness, "
@@ -89,18 +91,23 @@ def main():
                     marks += mark
             misses[kind] += len(marks)
             sharp_all[kind].append(o["sharp_all"] / t["sharp_all"])
-            cells.append(f"{kind} {' '.join(row)} {marks or '-'} [all {sharp_all[kind][-1]:.2f}] "
+            thick[kind].append(o["thick"] / t["thick"])
+            cells.append(f"{kind} {' '.join(row)} {marks or '-'} "
+                         f"[all {sharp_all[kind][-1]:.2f} thick {thick[kind][-1]:.2f}] "
                          f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
     print("columns: sharpness coherence completeness axis-edges seam; "
-          "[all: ours / truth sharpness over every x, y and z slice, not an aim]")
+          "[all: ours / truth sharpness over every x, y and z slice; thick: ours / truth "
+          "phase thickness (phase-thickness.h); neither is an aim]")
     for kind in kinds:
         means = " ".join(f"{sum(values[(kind, a[0])]) / len(args.seeds):.3f}" for a in AIMS)
         worst = " ".join(f"{(min if a[0] == 'sharpness' else max)(values[(kind, a[0])]):.2f}"
                          for a in AIMS)
         all_mean = sum(sharp_all[kind]) / len(args.seeds)
+        thick_mean = sum(thick[kind]) / len(args.seeds)
         print(f"{kind}: mean {means}; worst {worst}; {misses[kind]} missed; "
-              f"all-slice sharpness mean {all_mean:.3f}, worst {min(sharp_all[kind]):.2f}")
+              f"all-slice sharpness mean {all_mean:.3f}, worst {min(sharp_all[kind]):.2f}; "
+              f"thickness mean {thick_mean:.3f}")
     print(f"missed in all: {sum(misses.values())} of {len(AIMS) * len(kinds) * len(args.seeds)}")
 
 

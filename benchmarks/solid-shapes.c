@@ -11,7 +11,8 @@
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
  * middle slice across x (blank without truth), and ours across x, y, z
  * and the diagonal. Each row ends with the sharpness averaged over every
- * x, y and z slice ("sharp-all"), steadier than the middle slices'. -i
+ * x, y and z slice ("sharp-all"), steadier than the middle slices', and
+ * the phase thickness over them ("thick", phase-thickness.h). -i
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
@@ -21,6 +22,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "metrics.h"
+#include "phase-thickness.h"
 #include "slice-figures.h"
 #include "truth-solids.h"
 
@@ -38,16 +40,22 @@ now (void)
   return (double) t.tv_sec + (double) t.tv_nsec * 1e-9;
 }
 
+/* The figures of `volume`, and its phase thickness (nan where it has no
+ * meaning: see phase-thickness.h). */
 static void
-print_row (const char *name, const char *what, const SliceFigures *f)
+print_row (const char *name, const char *what, const TsImage *exemplar, const float *volume,
+           size_t n, const SliceFigures *f)
 {
+  double thick = NAN;
+  if (!phase_thickness (exemplar, volume, n, &thick))
+    thick = NAN;
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
-          "sharp-all %.3f\n",
+          "sharp-all %.3f thick %.3f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
-          f->sharpness[2], f->sharpness[3], f->all_slices_sharpness);
+          f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick);
 }
 
 static void
@@ -208,12 +216,12 @@ main (int argc, char **argv)
               place (&strip, 0, &exemplar);
               if (truth && slice_figures (&exemplar, truth, n, &f))
                 {
-                  print_row (base, "truth", &f);
+                  print_row (base, "truth", &exemplar, truth, n, &f);
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
               if (slice_figures (&exemplar, ours, n, &f))
-                print_row (base, "ours", &f);
+                print_row (base, "ours", &exemplar, ours, n, &f);
               for (int a = 0; a < 4; a++)
                 {
                   slice_cut (ours, n, a, n / 2, &slice);
