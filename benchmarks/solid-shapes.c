@@ -40,15 +40,11 @@ now (void)
   return (double) t.tv_sec + (double) t.tv_nsec * 1e-9;
 }
 
-/* The figures of `volume`, and its phase thickness (nan where it has no
- * meaning: see phase-thickness.h). */
+/* The figures and the phase thickness `thick` (nan where it has no
+ * meaning or memory ran out: see phase-thickness.h). */
 static void
-print_row (const char *name, const char *what, const TsImage *exemplar, const float *volume,
-           size_t n, const SliceFigures *f)
+print_row (const char *name, const char *what, const SliceFigures *f, double thick)
 {
-  double thick = NAN;
-  if (!phase_thickness (exemplar, volume, n, &thick))
-    thick = NAN;
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
           "sharp-all %.3f thick %.3f\n",
@@ -198,7 +194,7 @@ main (int argc, char **argv)
             }
           else
             {
-              double seconds = now () - start, anisotropy = NAN;
+              double seconds = now () - start, anisotropy = NAN, thick;
               size_t wins[3] = { 0, 0, 0 }, voxels = n * n * n;
               ts_measure_anisotropy (&exemplar, &anisotropy);
               for (size_t p = 0; p < voxels; p++)
@@ -216,12 +212,18 @@ main (int argc, char **argv)
               place (&strip, 0, &exemplar);
               if (truth && slice_figures (&exemplar, truth, n, &f))
                 {
-                  print_row (base, "truth", &exemplar, truth, n, &f);
+                  thick = NAN;
+                  phase_thickness (&exemplar, truth, n, &thick);
+                  print_row (base, "truth", &f, thick);
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
               if (slice_figures (&exemplar, ours, n, &f))
-                print_row (base, "ours", &exemplar, ours, n, &f);
+                {
+                  thick = NAN;
+                  phase_thickness (&exemplar, ours, n, &thick);
+                  print_row (base, "ours", &f, thick);
+                }
               for (int a = 0; a < 4; a++)
                 {
                   slice_cut (ours, n, a, n / 2, &slice);
