@@ -12,7 +12,10 @@
  * middle slice across x (blank without truth), and ours across x, y, z
  * and the diagonal. Each row ends with the sharpness averaged over every
  * x, y and z slice ("sharp-all"), steadier than the middle slices', and
- * the phase thickness over them ("thick", phase-thickness.h). -i
+ * the phase thickness over them ("thick", phase-thickness.h), then the
+ * lowest and highest seam figure across interior lines of the seam's
+ * slices ("planes", seam-planes.h): a seam only counts when it stands
+ * out from them. -i
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
@@ -23,6 +26,7 @@
 #include "image-io.h"
 #include "metrics.h"
 #include "phase-thickness.h"
+#include "seam-planes.h"
 #include "slice-figures.h"
 #include "truth-solids.h"
 
@@ -42,16 +46,41 @@ now (void)
 
 /* The figures and the phase thickness `thick` (nan where it has no
  * meaning or memory ran out: see phase-thickness.h). */
+/* The lowest and highest seam figure of the interior lines (seam-planes.h),
+ * NAN if not measured. */
+typedef struct
+{
+  double lo, hi;
+} PlaneRange;
+
+static PlaneRange
+interior_planes (const TsImage *exemplar, const float *volume, size_t n)
+{
+  double planes[SEAM_PLANES];
+  PlaneRange range = { NAN, NAN };
+
+  if (!seam_planes (exemplar, volume, n, planes))
+    return range;
+  range.lo = range.hi = planes[1];
+  for (int k = 2; k < SEAM_PLANES; k++)
+    {
+      range.lo = fmin (range.lo, planes[k]);
+      range.hi = fmax (range.hi, planes[k]);
+    }
+  return range;
+}
+
 static void
-print_row (const char *name, const char *what, const SliceFigures *f, double thick)
+print_row (const char *name, const char *what, const SliceFigures *f, double thick,
+           PlaneRange planes)
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
-          "sharp-all %.3f thick %.3f\n",
+          "sharp-all %.3f thick %.3f planes %.3f %.3f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
-          f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick);
+          f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi);
 }
 
 static void
@@ -214,7 +243,7 @@ main (int argc, char **argv)
                 {
                   thick = NAN;
                   phase_thickness (&exemplar, truth, n, &thick);
-                  print_row (base, "truth", &f, thick);
+                  print_row (base, "truth", &f, thick, interior_planes (&exemplar, truth, n));
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
@@ -222,7 +251,7 @@ main (int argc, char **argv)
                 {
                   thick = NAN;
                   phase_thickness (&exemplar, ours, n, &thick);
-                  print_row (base, "ours", &f, thick);
+                  print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n));
                 }
               for (int a = 0; a < 4; a++)
                 {
