@@ -119,17 +119,21 @@ slice_figures (const TsImage *exemplar, const float *volume, size_t n, SliceFigu
       }
   out->seam = seams / (3.0 * SLICE_SEAM_SLICES);
   out->all_slices_sharpness = 0.0;
+  out->worst_slice_anisotropy = 0.0;
   for (int axis = 0; axis < 3; axis++)
     for (size_t k = 0; k < n; k++)
       {
-        double sharpness;
+        double sharpness, anisotropy;
         slice_cut (volume, n, axis, k, &slice);
-        if (ts_measure_sharpness (exemplar, &slice, &sharpness) != TS_MEASURE_OK)
+        if (ts_measure_sharpness (exemplar, &slice, &sharpness) != TS_MEASURE_OK
+            || ts_measure_anisotropy (&slice, &anisotropy) != TS_MEASURE_OK)
           {
             free (slice.pixels);
             return false;
           }
         out->all_slices_sharpness += sharpness / (3.0 * (double) n);
+        /* A flat slice has no direction (NAN): fmax keeps the others'. */
+        out->worst_slice_anisotropy = fmax (out->worst_slice_anisotropy, anisotropy);
       }
   out->median_coherence = median4 (out->coherence);
   out->median_completeness = median4 (out->completeness);

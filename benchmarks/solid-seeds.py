@@ -25,7 +25,7 @@ import sys
 
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
                     r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+) "
-                    r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan)$")
+                    r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan) streaks ([\d.]+)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -48,8 +48,8 @@ def run_seed(shapes, size, seed, kinds):
         if m:
             figures[(m.group(1), m.group(2))] = dict(zip(
                 ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all", "thick",
-                 "planes_lo", "planes_hi"),
-                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11))))
+                 "planes_lo", "planes_hi", "streaks"),
+                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -74,6 +74,7 @@ def main():
     values = {(k, a[0]): [] for k in kinds for a in AIMS}
     sharp_all = {k: [] for k in kinds}
     thick = {k: [] for k in kinds}
+    streaks = {k: [] for k in kinds}
     misses = {k: 0 for k in kinds}
     seam_misses, seam_in_spread = 0, 0
 
@@ -97,15 +98,18 @@ def main():
                 seam_in_spread += o["seam"] <= o["planes_hi"]
             sharp_all[kind].append(o["sharp_all"] / t["sharp_all"])
             thick[kind].append(o["thick"] / t["thick"])
+            streaks[kind].append(o["streaks"] / t["streaks"])
             cells.append(f"{kind} {' '.join(row)} {marks or '-'} "
                          f"[all {sharp_all[kind][-1]:.2f} thick {thick[kind][-1]:.2f} "
-                         f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f}] "
+                         f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f} "
+                         f"streaks {streaks[kind][-1]:.2f}] "
                          f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
     print("columns: sharpness coherence completeness axis-edges seam; "
           "[all: ours / truth sharpness over every x, y and z slice; thick: ours / truth "
           "phase thickness (phase-thickness.h); lines: our seam figure's range across the "
-          "interior lines of the same slices (seam-planes.h); none is an aim]")
+          "interior lines of the same slices (seam-planes.h); streaks: ours / truth largest "
+          "edge anisotropy of any x, y or z slice (slice-figures.h); none is an aim]")
     for kind in kinds:
         means = " ".join(f"{sum(values[(kind, a[0])]) / len(args.seeds):.3f}" for a in AIMS)
         worst = " ".join(f"{(min if a[0] == 'sharpness' else max)(values[(kind, a[0])]):.2f}"
@@ -114,7 +118,8 @@ def main():
         thick_mean = sum(thick[kind]) / len(args.seeds)
         print(f"{kind}: mean {means}; worst {worst}; {misses[kind]} missed; "
               f"all-slice sharpness mean {all_mean:.3f}, worst {min(sharp_all[kind]):.2f}; "
-              f"thickness mean {thick_mean:.3f}")
+              f"thickness mean {thick_mean:.3f}; streaks mean "
+              f"{sum(streaks[kind]) / len(args.seeds):.3f}, worst {max(streaks[kind]):.2f}")
     print(f"missed in all: {sum(misses.values())} of {len(AIMS) * len(kinds) * len(args.seeds)}")
     print(f"seams over 1.10 no higher than an interior line's figure: {seam_in_spread} of {seam_misses}")
 

@@ -15,7 +15,8 @@
  * the phase thickness over them ("thick", phase-thickness.h), then the
  * lowest and highest seam figure across interior lines of the seam's
  * slices ("planes", seam-planes.h): a seam only counts when it stands
- * out from them. -i
+ * out from them, and the largest edge anisotropy of any x, y or z slice
+ * ("streaks", slice-figures.h): extrusion in any direction. -i
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
@@ -76,11 +77,12 @@ print_row (const char *name, const char *what, const SliceFigures *f, double thi
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
-          "sharp-all %.3f thick %.3f planes %.3f %.3f\n",
+          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
-          f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi);
+          f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi,
+          f->worst_slice_anisotropy);
 }
 
 static void
