@@ -1,6 +1,7 @@
 /* Quality figures of a solid's slices against its exemplar, without GEGL:
  * the middle slices across x, y and z and the diagonal plane x = z (and
- * the sharpness over every x, y and z slice),
+ * the sharpness and the largest edge anisotropy over every x, y and z
+ * slice),
  * measured with the texsynth-measure library (solid-shapes and the
  * solid shape tests).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
