@@ -25,7 +25,8 @@ import sys
 
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
                     r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+) "
-                    r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan) streaks ([\d.]+)$")
+                    r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan) streaks ([\d.]+) "
+                    r"grid ([\d.]+|nan)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -48,8 +49,8 @@ def run_seed(shapes, size, seed, kinds):
         if m:
             figures[(m.group(1), m.group(2))] = dict(zip(
                 ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all", "thick",
-                 "planes_lo", "planes_hi", "streaks"),
-                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12))))
+                 "planes_lo", "planes_hi", "streaks", "grid"),
+                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -75,6 +76,7 @@ def main():
     sharp_all = {k: [] for k in kinds}
     thick = {k: [] for k in kinds}
     streaks = {k: [] for k in kinds}
+    grid = {k: [] for k in kinds}
     misses = {k: 0 for k in kinds}
     seam_misses, seam_in_spread = 0, 0
 
@@ -99,17 +101,20 @@ def main():
             sharp_all[kind].append(o["sharp_all"] / t["sharp_all"])
             thick[kind].append(o["thick"] / t["thick"])
             streaks[kind].append(o["streaks"] / t["streaks"])
+            grid[kind].append(o["grid"])
             cells.append(f"{kind} {' '.join(row)} {marks or '-'} "
                          f"[all {sharp_all[kind][-1]:.2f} thick {thick[kind][-1]:.2f} "
                          f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f} "
-                         f"streaks {streaks[kind][-1]:.2f}] "
+                         f"streaks {streaks[kind][-1]:.2f} "
+                         f"grid {o['grid']:.2f}/{t['grid']:.2f}] "
                          f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
     print("columns: sharpness coherence completeness axis-edges seam; "
           "[all: ours / truth sharpness over every x, y and z slice; thick: ours / truth "
           "phase thickness (phase-thickness.h); lines: our seam figure's range across the "
           "interior lines of the same slices (seam-planes.h); streaks: ours / truth largest "
-          "edge anisotropy of any x, y or z slice (slice-figures.h); none is an aim]")
+          "edge anisotropy of any x, y or z slice (slice-figures.h); grid: ours/truth step "
+          "across a lattice of planes over the others (plane-steps.h); none is an aim]")
     for kind in kinds:
         means = " ".join(f"{sum(values[(kind, a[0])]) / len(args.seeds):.3f}" for a in AIMS)
         worst = " ".join(f"{(min if a[0] == 'sharpness' else max)(values[(kind, a[0])]):.2f}"
@@ -119,7 +124,8 @@ def main():
         print(f"{kind}: mean {means}; worst {worst}; {misses[kind]} missed; "
               f"all-slice sharpness mean {all_mean:.3f}, worst {min(sharp_all[kind]):.2f}; "
               f"thickness mean {thick_mean:.3f}; streaks mean "
-              f"{sum(streaks[kind]) / len(args.seeds):.3f}, worst {max(streaks[kind]):.2f}")
+              f"{sum(streaks[kind]) / len(args.seeds):.3f}, worst {max(streaks[kind]):.2f}; "
+              f"grid mean {sum(grid[kind]) / len(args.seeds):.3f}, worst {max(grid[kind]):.2f}")
     print(f"missed in all: {sum(misses.values())} of {len(AIMS) * len(kinds) * len(args.seeds)}")
     print(f"seams over 1.10 no higher than an interior line's figure: {seam_in_spread} of {seam_misses}")
 

@@ -16,7 +16,9 @@
  * lowest and highest seam figure across interior lines of the seam's
  * slices ("planes", seam-planes.h): a seam only counts when it stands
  * out from them, and the largest edge anisotropy of any x, y or z slice
- * ("streaks", slice-figures.h): extrusion in any direction. -i
+ * ("streaks", slice-figures.h): extrusion in any direction, and last
+ * how much the steps across a lattice of voxel planes exceed the others
+ * ("grid", plane-steps.h): axis-aligned blocks. -i
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
@@ -27,6 +29,7 @@
 #include "image-io.h"
 #include "metrics.h"
 #include "phase-thickness.h"
+#include "plane-steps.h"
 #include "seam-planes.h"
 #include "slice-figures.h"
 #include "truth-solids.h"
@@ -71,18 +74,26 @@ interior_planes (const TsImage *exemplar, const float *volume, size_t n)
   return range;
 }
 
+/* plane_step_lattice's ratio, NAN if out of memory. */
+static double
+lattice (const float *volume, size_t n)
+{
+  double ratio;
+  return plane_step_lattice (volume, n, &ratio) ? ratio : NAN;
+}
+
 static void
 print_row (const char *name, const char *what, const SliceFigures *f, double thick,
-           PlaneRange planes)
+           PlaneRange planes, double grid)
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
-          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f\n",
+          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f grid %.3f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
           f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi,
-          f->worst_slice_anisotropy);
+          f->worst_slice_anisotropy, grid);
 }
 
 static void
@@ -245,7 +256,8 @@ main (int argc, char **argv)
                 {
                   thick = NAN;
                   phase_thickness (&exemplar, truth, n, &thick);
-                  print_row (base, "truth", &f, thick, interior_planes (&exemplar, truth, n));
+                  print_row (base, "truth", &f, thick, interior_planes (&exemplar, truth, n),
+                             lattice (truth, n));
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
@@ -253,7 +265,8 @@ main (int argc, char **argv)
                 {
                   thick = NAN;
                   phase_thickness (&exemplar, ours, n, &thick);
-                  print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n));
+                  print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n),
+                             lattice (ours, n));
                 }
               for (int a = 0; a < 4; a++)
                 {
