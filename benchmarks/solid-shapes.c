@@ -7,7 +7,7 @@
  * share of gradient energy within 10 degrees of the axes, over the
  * exemplar's) and the seam. An image path instead of a kind measures the
  * synthesis from its central SIZE x SIZE crop alone (no truth).
- * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [cells|blobs|grains|IMAGE.png]...
+ * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] [cells|blobs|grains|IMAGE.png]...
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
  * middle slice across x (blank without truth), and ours across x, y, z
  * and the diagonal. Each row ends with the sharpness averaged over every
@@ -24,7 +24,10 @@
  * whether the axis-edges aim applies: only near 0 does an isotropic
  * solid's slice compare like with like. The share of voxels copied from
  * each orientation's votes shows when one orientation dominates (its
- * layers streak the other slices).
+ * layers streak the other slices). -n adds a "sample" row: the same
+ * truth solid drawn with another seed, measured against this exemplar,
+ * which is what a perfect engine (a genuinely new sample of the texture)
+ * would score: the aims it misses are the measures' own spread.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "metrics.h"
@@ -39,6 +42,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+/* Added to the seed to draw the independent sample of -n. */
+#define NEW_SAMPLE_SEED_OFFSET 1000003u
 
 static double
 now (void)
@@ -96,6 +102,34 @@ print_row (const char *name, const char *what, const SliceFigures *f, double thi
           f->worst_slice_anisotropy, grid);
 }
 
+/* The truth solid `name` drawn with another seed, measured against the
+ * exemplar of `seed`'s: an independent sample of the same texture. */
+static bool
+print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t seed)
+{
+  uint8_t *rgb = malloc (n * n * n * 3);
+  float *sample = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+  SliceFigures f;
+  double thick = NAN;
+  bool ok = rgb && sample && truth_solid_render (name, n, seed + NEW_SAMPLE_SEED_OFFSET, rgb);
+
+  if (ok)
+    {
+      slice_rgb8_to_lab (rgb, n * n * n, sample);
+      ok = slice_figures (exemplar, sample, n, &f);
+    }
+  if (ok)
+    {
+      phase_thickness (exemplar, sample, n, &thick);
+      print_row (name, "sample", &f, thick, interior_planes (exemplar, sample, n), lattice (sample, n));
+    }
+  else
+    fprintf (stderr, "solid-shapes: %s: no new sample (out of memory)\n", name);
+  free (rgb);
+  free (sample);
+  return ok;
+}
+
 static void
 save (const char *dir, const char *name, const char *what, const TsImage *image)
 {
@@ -149,13 +183,15 @@ main (int argc, char **argv)
 {
   const char *dir = NULL;
   int iterations = 0, patch = 0;
+  bool new_sample = false;
   size_t n = argc > 2 ? (size_t) atol (argv[1]) : 0;
   uint32_t seed = argc > 2 ? (uint32_t) strtoul (argv[2], NULL, 10) : 0;
   int status = 0;
 
   if (n < 16 || n > 512)
     {
-      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [cells|blobs|grains|IMAGE.png]...\n");
+      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] "
+                       "[cells|blobs|grains|IMAGE.png]...\n");
       return 2;
     }
   ts_io_init ();
@@ -179,6 +215,12 @@ main (int argc, char **argv)
       if (!strcmp (name, "-p") && i + 1 < argc)
         {
           patch = atoi (argv[++i]);
+          free (ours);
+          continue;
+        }
+      if (!strcmp (name, "-n"))
+        {
+          new_sample = true;
           free (ours);
           continue;
         }
@@ -268,6 +310,8 @@ main (int argc, char **argv)
                   print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n),
                              lattice (ours, n));
                 }
+              if (truth && new_sample && !print_new_sample (base, &exemplar, n, seed))
+                status = 1;
               for (int a = 0; a < 4; a++)
                 {
                   slice_cut (ours, n, a, n / 2, &slice);
