@@ -72,19 +72,39 @@ opaque_source (const TsSolidView *view, size_t sx, size_t sy, uint64_t random)
   return view->opaque[ts_random_below (random, view->opaque_count)];
 }
 
+/* The start block of coordinate x along one axis, of `blocks` blocks
+ * that tile the period n, shifted by `phase`. Returns the block's index
+ * and sets x's offset inside it. */
+static size_t
+block_of (size_t x, size_t n, size_t blocks, size_t phase, size_t *offset)
+{
+  size_t w = (x + phase) % n, index = w * blocks / n;
+
+  *offset = w - (index * n + blocks - 1) / blocks;
+  return index;
+}
+
 /* Coarsest start: random exemplar blocks per orientation, whose votes
- * agree, rather than single random pixels. */
+ * agree, rather than single random pixels. The blocks tile the period
+ * at a random phase: blocks counted from the wrap made it a block
+ * boundary in every volume, and such boundaries survive every level
+ * (128^3 blobs, seed 4: seam 1.17 where no interior line passed 1.04). */
 void
 ts_solid_start_random_blocks (TsSolidLevel *l, size_t level, size_t block, uint32_t seed)
 {
-  size_t n = l->n;
+  size_t n = l->n, blocks = (n + block - 1) / block, phase[3];
 
+  for (int k = 0; k < 3; k++)
+    phase[k] = (size_t) ts_random_below (ts_random (seed, (uint32_t) level, 7, 0, 40 + (uint32_t) k), n);
 #pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
   for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
     for (size_t x = 0; x < n; x++)
       {
         size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
-        uint64_t cell = ((xyz[2] / block) * 1024 + xyz[1] / block) * 1024 + x / block;
+        size_t index[3], offset[3];
+        for (int k = 0; k < 3; k++)
+          index[k] = block_of (xyz[k], n, blocks, phase[k], &offset[k]);
+        uint64_t cell = ((uint64_t) index[2] * 1024 + index[1]) * 1024 + index[0];
         for (int a = 0; a < TS_SOLID_AXES; a++)
           {
             const TsSolidView *view = &l->view[a];
@@ -95,8 +115,8 @@ ts_solid_start_random_blocks (TsSolidLevel *l, size_t level, size_t block, uint3
             uint64_t r = ts_random (seed, (uint32_t) level, 0, cell, 1 + (uint32_t) a);
             int32_t corner = view->opaque[ts_random_below (r, view->opaque_count)];
             size_t w = view->exemplar->width;
-            l->source[a][p] = opaque_source (view, (size_t) corner % w + xyz[u] % block,
-                                             (size_t) corner / w + xyz[v] % block,
+            l->source[a][p] = opaque_source (view, (size_t) corner % w + offset[u],
+                                             (size_t) corner / w + offset[v],
                                              ts_random (seed, (uint32_t) level, 0, p, 5));
           }
         value_from_sources (l, p);

@@ -9,7 +9,8 @@
  * seam aims, which need no truth.
  *
  * Sharpness at least 0.9 x the truth's, the issue's aim, on all three
- * (met at 128^3 too: see the README's solid figures).
+ * (met at 128^3 too: see the README's solid figures). The truth solids'
+ * aims hold on the mean of three seeds (see test_kind).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "test-util.h"
 #include "metrics.h"
@@ -21,6 +22,8 @@
 
 /* Big enough for several stones per slice, small enough for seconds. */
 #define SIDE 64
+/* Seeds whose figures are averaged (see test_kind). */
+#define SEEDS 3
 
 typedef struct
 {
@@ -30,8 +33,15 @@ typedef struct
   double      axis_edges;         /* over the exemplar's, at most         */
 } Case;
 
-static void
-test_kind (const Case *c)
+/* One seed's figures: ours over the truth's (sharpness, coherence,
+ * completeness) and ours alone (axis-edges over the exemplar's, seam). */
+typedef struct
+{
+  double sharpness, coherence, completeness, axis_edges, seam;
+} Ratios;
+
+static bool
+measure_seed (const char *kind, uint32_t seed, Ratios *r)
 {
   size_t n = SIDE, voxels = n * n * n;
   uint8_t *rgb = malloc (voxels * 3);
@@ -41,42 +51,72 @@ test_kind (const Case *c)
   SliceFigures t, o;
   TsSolidParams params;
   TsError error;
+  bool ok = false;
 
-  if (!rgb || !truth || !ours || !truth_solid_render (c->kind, n, 1, rgb))
+  if (!rgb || !truth || !ours || !truth_solid_render (kind, n, seed, rgb))
     {
-      CHECK (0, "%s: out of memory or unknown solid", c->kind);
+      CHECK (0, "%s: out of memory or unknown solid", kind);
       free (rgb), free (truth), free (ours);
-      return;
+      return false;
     }
   slice_rgb8_to_lab (rgb, voxels, truth);
   exemplar.pixels = truth; /* its first n^2 voxels: the slice z = 0 */
   const TsImage *ex3[3] = { &exemplar, &exemplar, &exemplar };
   ts_solid_params_init (&params);
   params.size = n;
-  params.seed = 1;
-  CHECK (ts_synthesize_solid (&params, ex3, ours, NULL, NULL, &error) == TS_OK, "%s: %s", c->kind,
-         error.message);
-  CHECK (slice_figures (&exemplar, truth, n, &t) && slice_figures (&exemplar, ours, n, &o),
-         "%s: figures", c->kind);
-  printf ("%-7s truth / ours: axis-edges %.3f / %.3f (worst slice %.3f / %.3f), sharpness %.3f / %.3f, "
-          "coherence %.3f / %.3f, completeness %.3f / %.3f, seam %.3f / %.3f\n",
-          c->kind, t.median_axis_edges, o.median_axis_edges, t.worst_axis_edges, o.worst_axis_edges,
-          t.median_sharpness, o.median_sharpness, t.median_coherence, o.median_coherence,
-          t.median_completeness, o.median_completeness, t.seam, o.seam);
-  CHECK (o.median_axis_edges <= c->axis_edges, "%s: axis-edges %.3f <= %.2f", c->kind,
-         o.median_axis_edges, c->axis_edges);
-  CHECK (o.median_sharpness >= c->sharpness_share * t.median_sharpness,
-         "%s: sharpness %.3f >= %.2f x the truth's %.3f", c->kind, o.median_sharpness,
-         c->sharpness_share, t.median_sharpness);
-  CHECK (o.median_coherence <= 1.15 * t.median_coherence, "%s: coherence %.3f <= 1.15 x %.3f",
-         c->kind, o.median_coherence, t.median_coherence);
-  CHECK (o.median_completeness <= c->completeness_share * t.median_completeness,
-         "%s: completeness %.3f <= %.2f x %.3f", c->kind, o.median_completeness,
-         c->completeness_share, t.median_completeness);
-  CHECK (o.seam <= 1.10, "%s: seam %.3f <= 1.10", c->kind, o.seam);
+  params.seed = seed;
+  if (ts_synthesize_solid (&params, ex3, ours, NULL, NULL, &error) != TS_OK)
+    CHECK (0, "%s, seed %u: %s", kind, seed, error.message);
+  else if (!slice_figures (&exemplar, truth, n, &t) || !slice_figures (&exemplar, ours, n, &o))
+    CHECK (0, "%s, seed %u: figures", kind, seed);
+  else
+    {
+      r->sharpness = o.median_sharpness / t.median_sharpness;
+      r->coherence = o.median_coherence / t.median_coherence;
+      r->completeness = o.median_completeness / t.median_completeness;
+      r->axis_edges = o.median_axis_edges;
+      r->seam = o.seam;
+      printf ("%-7s seed %u: ours / truth sharpness %.3f, coherence %.3f, completeness %.3f; "
+              "axis-edges %.3f (truth %.3f), seam %.3f\n", kind, seed, r->sharpness, r->coherence,
+              r->completeness, r->axis_edges, t.median_axis_edges, r->seam);
+      ok = true;
+    }
   free (rgb);
   free (truth);
   free (ours);
+  return ok;
+}
+
+/* The aims on the mean over SEEDS seeds: one seed's figures are a draw
+ * of the exemplar and of four slices, and at 64^3 an independent sample
+ * of the truth itself misses 14 of 180 single-seed checks (seeds 1-12;
+ * solid-seeds.py -n), so a single seed could not tell engines apart. */
+static void
+test_kind (const Case *c)
+{
+  Ratios sum = { 0, 0, 0, 0, 0 }, r;
+
+  for (uint32_t seed = 1; seed <= SEEDS; seed++)
+    {
+      if (!measure_seed (c->kind, seed, &r))
+        return;
+      sum.sharpness += r.sharpness / SEEDS;
+      sum.coherence += r.coherence / SEEDS;
+      sum.completeness += r.completeness / SEEDS;
+      sum.axis_edges += r.axis_edges / SEEDS;
+      sum.seam += r.seam / SEEDS;
+    }
+  printf ("%-7s mean of %d seeds: sharpness %.3f, coherence %.3f, completeness %.3f x the truth's; "
+          "axis-edges %.3f, seam %.3f\n", c->kind, SEEDS, sum.sharpness, sum.coherence,
+          sum.completeness, sum.axis_edges, sum.seam);
+  CHECK (sum.axis_edges <= c->axis_edges, "%s: axis-edges %.3f <= %.2f", c->kind, sum.axis_edges,
+         c->axis_edges);
+  CHECK (sum.sharpness >= c->sharpness_share, "%s: sharpness %.3f >= %.2f x the truth's", c->kind,
+         sum.sharpness, c->sharpness_share);
+  CHECK (sum.coherence <= 1.15, "%s: coherence %.3f <= 1.15 x the truth's", c->kind, sum.coherence);
+  CHECK (sum.completeness <= c->completeness_share, "%s: completeness %.3f <= %.2f x the truth's",
+         c->kind, sum.completeness, c->completeness_share);
+  CHECK (sum.seam <= 1.10, "%s: seam %.3f <= 1.10", c->kind, sum.seam);
 }
 
 /* A bundled real exemplar with no preferred edge orientation: without a
@@ -122,8 +162,8 @@ int
 main (void)
 {
   static const Case cases[] = {
-    /* At 64^3: sharpness cells 1.04, blobs 1.17, grains 1.08 x the truth's;
-     * coherence 1.06, 1.11, 1.00 x. */
+    /* At 64^3, mean of seeds 1-3: sharpness cells 0.95, blobs 1.10,
+     * grains 1.08 x the truth's; coherence 1.00, 1.09, 1.00 x. */
     { "cells", 0.90, 1.15, 1.08 }, { "blobs", 0.90, 1.15, 1.08 }, { "grains", 0.90, 1.15, 1.08 },
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
