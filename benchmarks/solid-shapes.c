@@ -124,7 +124,7 @@ print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t 
       print_row (name, "sample", &f, thick, interior_planes (exemplar, sample, n), lattice (sample, n));
     }
   else
-    fprintf (stderr, "solid-shapes: %s: no new sample (out of memory)\n", name);
+    fprintf (stderr, "solid-shapes: %s: could not render or measure a new sample\n", name);
   free (rgb);
   free (sample);
   return ok;
