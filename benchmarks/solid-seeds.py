@@ -44,8 +44,18 @@ AIMS = (
 )
 
 
-def marks_of(o, t):
-    return "".join(mark for name, read, missed, mark in AIMS if missed(read(o, t)))
+def score(o, t):
+    """Each aim's figure for the row `o` against the truth `t`, and the marks of those missed."""
+    figures = [read(o, t) for _, read, _, _ in AIMS]
+    return figures, "".join(mark for v, (_, _, missed, mark) in zip(figures, AIMS) if missed(v))
+
+
+def mean_and_worst(values, kind, count):
+    """Per aim, the mean and the worst (lowest sharpness, else highest) over the seeds."""
+    means = " ".join(f"{sum(values[(kind, a[0])]) / count:.3f}" for a in AIMS)
+    worst = " ".join(f"{(min if a[0] == 'sharpness' else max)(values[(kind, a[0])]):.2f}"
+                     for a in AIMS)
+    return means, worst
 
 
 def run_seed(shapes, size, seed, kinds, new_sample):
@@ -102,19 +112,15 @@ def main():
         cells = []
         for kind in kinds:
             o, t = figures[(kind, "ours")], figures[(kind, "truth")]
-            row, marks = [], ""
-            for name, read, missed, mark in AIMS:
-                v = read(o, t)
-                values[(kind, name)].append(v)
-                row.append(f"{v:.2f}")
-                if missed(v):
-                    marks += mark
+            row, marks = score(o, t)
+            for a, v in zip(AIMS, row):
+                values[(kind, a[0])].append(v)
             misses[kind] += len(marks)
             sample = ""
             if args.new_sample:
-                sample = marks_of(figures[(kind, "sample")], t)
-                for name, read, _, _ in AIMS:
-                    sample_values[(kind, name)].append(read(figures[(kind, "sample")], t))
+                sample_row, sample = score(figures[(kind, "sample")], t)
+                for a, v in zip(AIMS, sample_row):
+                    sample_values[(kind, a[0])].append(v)
                 sample_misses += len(sample)
                 shared_misses += sum(m in sample for m in marks)
                 sample = f"sample {sample or '-'} "
@@ -125,7 +131,7 @@ def main():
             thick[kind].append(o["thick"] / t["thick"])
             streaks[kind].append(o["streaks"] / t["streaks"])
             grid[kind].append(o["grid"])
-            cells.append(f"{kind} {' '.join(row)} {marks or '-'} "
+            cells.append(f"{kind} {' '.join(f'{v:.2f}' for v in row)} {marks or '-'} "
                          f"[all {sharp_all[kind][-1]:.2f} thick {thick[kind][-1]:.2f} "
                          f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f} "
                          f"streaks {streaks[kind][-1]:.2f} "
@@ -139,9 +145,7 @@ def main():
           "edge anisotropy of any x, y or z slice (slice-figures.h); grid: ours/truth step "
           "across a lattice of planes over the others (plane-steps.h); none is an aim]")
     for kind in kinds:
-        means = " ".join(f"{sum(values[(kind, a[0])]) / len(args.seeds):.3f}" for a in AIMS)
-        worst = " ".join(f"{(min if a[0] == 'sharpness' else max)(values[(kind, a[0])]):.2f}"
-                         for a in AIMS)
+        means, worst = mean_and_worst(values, kind, len(args.seeds))
         all_mean = sum(sharp_all[kind]) / len(args.seeds)
         thick_mean = sum(thick[kind]) / len(args.seeds)
         print(f"{kind}: mean {means}; worst {worst}; {misses[kind]} missed; "
@@ -150,9 +154,7 @@ def main():
               f"{sum(streaks[kind]) / len(args.seeds):.3f}, worst {max(streaks[kind]):.2f}; "
               f"grid mean {sum(grid[kind]) / len(args.seeds):.3f}, worst {max(grid[kind]):.2f}")
         if args.new_sample:
-            means = " ".join(f"{sum(sample_values[(kind, a[0])]) / len(args.seeds):.3f}" for a in AIMS)
-            worst = " ".join(f"{(min if a[0] == 'sharpness' else max)(sample_values[(kind, a[0])]):.2f}"
-                             for a in AIMS)
+            means, worst = mean_and_worst(sample_values, kind, len(args.seeds))
             print(f"{kind}, a new sample of the truth: mean {means}; worst {worst}")
     print(f"missed in all: {sum(misses.values())} of {len(AIMS) * len(kinds) * len(args.seeds)}")
     print(f"seams over 1.10 no higher than an interior line's figure: {seam_in_spread} of {seam_misses}")

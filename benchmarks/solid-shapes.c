@@ -102,22 +102,35 @@ print_row (const char *name, const char *what, const SliceFigures *f, double thi
           f->worst_slice_anisotropy, grid);
 }
 
+/* The truth solid `name` (truth-solids.h) at n^3 for `seed`, in Lab +
+ * alpha; NULL if unknown or out of memory. */
+static float *
+render_lab (const char *name, size_t n, uint32_t seed)
+{
+  uint8_t *rgb = malloc (n * n * n * 3);
+  float *lab = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+
+  if (rgb && lab && truth_solid_render (name, n, seed, rgb))
+    slice_rgb8_to_lab (rgb, n * n * n, lab);
+  else
+    {
+      free (lab);
+      lab = NULL;
+    }
+  free (rgb);
+  return lab;
+}
+
 /* The truth solid `name` drawn with another seed, measured against the
  * exemplar of `seed`'s: an independent sample of the same texture. */
 static bool
 print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t seed)
 {
-  uint8_t *rgb = malloc (n * n * n * 3);
-  float *sample = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+  float *sample = render_lab (name, n, seed + NEW_SAMPLE_SEED_OFFSET);
   SliceFigures f;
   double thick = NAN;
-  bool ok = rgb && sample && truth_solid_render (name, n, seed + NEW_SAMPLE_SEED_OFFSET, rgb);
+  bool ok = sample && slice_figures (exemplar, sample, n, &f);
 
-  if (ok)
-    {
-      slice_rgb8_to_lab (rgb, n * n * n, sample);
-      ok = slice_figures (exemplar, sample, n, &f);
-    }
   if (ok)
     {
       phase_thickness (exemplar, sample, n, &thick);
@@ -125,7 +138,6 @@ print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t 
     }
   else
     fprintf (stderr, "solid-shapes: %s: could not render or measure a new sample\n", name);
-  free (rgb);
   free (sample);
   return ok;
 }
@@ -236,23 +248,17 @@ main (int argc, char **argv)
         status = 1;
       else if (!strstr (name, ".png"))
         {
-          uint8_t *rgb = malloc (n * n * n * 3);
-          truth = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+          truth = render_lab (name, n, seed);
           exemplar.pixels = malloc (n * n * TS_CHANNELS * sizeof (float));
-          if (!rgb || !truth || !exemplar.pixels || !truth_solid_render (name, n, seed, rgb))
+          if (!truth || !exemplar.pixels)
             {
               fprintf (stderr, "solid-shapes: unknown solid '%s' or out of memory\n", name);
-              free (rgb);
               free (truth);
               truth = NULL;
               status = 1;
             }
           else
-            {
-              slice_rgb8_to_lab (rgb, n * n * n, truth);
-              memcpy (exemplar.pixels, truth, n * n * TS_CHANNELS * sizeof (float));
-              free (rgb);
-            }
+            memcpy (exemplar.pixels, truth, n * n * TS_CHANNELS * sizeof (float));
         }
       if (status == 0 && (!ours || !slice.pixels || !exemplar.pixels || !sources))
         {

@@ -94,29 +94,29 @@ measure_seed (const char *kind, uint32_t seed, Ratios *r)
 static void
 test_kind (const Case *c)
 {
-  Ratios sum = { 0, 0, 0, 0, 0 }, r;
+  Ratios mean = { 0, 0, 0, 0, 0 }, r;
 
   for (uint32_t seed = 1; seed <= SEEDS; seed++)
     {
       if (!measure_seed (c->kind, seed, &r))
         return;
-      sum.sharpness += r.sharpness / SEEDS;
-      sum.coherence += r.coherence / SEEDS;
-      sum.completeness += r.completeness / SEEDS;
-      sum.axis_edges += r.axis_edges / SEEDS;
-      sum.seam += r.seam / SEEDS;
+      mean.sharpness += r.sharpness / SEEDS;
+      mean.coherence += r.coherence / SEEDS;
+      mean.completeness += r.completeness / SEEDS;
+      mean.axis_edges += r.axis_edges / SEEDS;
+      mean.seam += r.seam / SEEDS;
     }
   printf ("%-7s mean of %d seeds: sharpness %.3f, coherence %.3f, completeness %.3f x the truth's; "
-          "axis-edges %.3f, seam %.3f\n", c->kind, SEEDS, sum.sharpness, sum.coherence,
-          sum.completeness, sum.axis_edges, sum.seam);
-  CHECK (sum.axis_edges <= c->axis_edges, "%s: axis-edges %.3f <= %.2f", c->kind, sum.axis_edges,
+          "axis-edges %.3f, seam %.3f\n", c->kind, SEEDS, mean.sharpness, mean.coherence,
+          mean.completeness, mean.axis_edges, mean.seam);
+  CHECK (mean.axis_edges <= c->axis_edges, "%s: axis-edges %.3f <= %.2f", c->kind, mean.axis_edges,
          c->axis_edges);
-  CHECK (sum.sharpness >= c->sharpness_share, "%s: sharpness %.3f >= %.2f x the truth's", c->kind,
-         sum.sharpness, c->sharpness_share);
-  CHECK (sum.coherence <= 1.15, "%s: coherence %.3f <= 1.15 x the truth's", c->kind, sum.coherence);
-  CHECK (sum.completeness <= c->completeness_share, "%s: completeness %.3f <= %.2f x the truth's",
-         c->kind, sum.completeness, c->completeness_share);
-  CHECK (sum.seam <= 1.10, "%s: seam %.3f <= 1.10", c->kind, sum.seam);
+  CHECK (mean.sharpness >= c->sharpness_share, "%s: sharpness %.3f >= %.2f x the truth's", c->kind,
+         mean.sharpness, c->sharpness_share);
+  CHECK (mean.coherence <= 1.15, "%s: coherence %.3f <= 1.15 x the truth's", c->kind, mean.coherence);
+  CHECK (mean.completeness <= c->completeness_share, "%s: completeness %.3f <= %.2f x the truth's",
+         c->kind, mean.completeness, c->completeness_share);
+  CHECK (mean.seam <= 1.10, "%s: seam %.3f <= 1.10", c->kind, mean.seam);
 }
 
 /* A bundled real exemplar with no preferred edge orientation: without a
