@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "slice-figures.h"
 #include "metrics.h"
+#include "truth-solids.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -34,6 +35,23 @@ slice_rgb8_to_lab (const uint8_t *rgb, size_t count, float *lab)
       lab[4 * i + 2] = (float) (200.0 * (fy - fz));
       lab[4 * i + 3] = 1.0f;
     }
+}
+
+float *
+slice_truth_lab (const char *name, size_t n, uint32_t seed)
+{
+  uint8_t *rgb = malloc (n * n * n * 3);
+  float *lab = malloc (n * n * n * TS_CHANNELS * sizeof (float));
+
+  if (rgb && lab && truth_solid_render (name, n, seed, rgb))
+    slice_rgb8_to_lab (rgb, n * n * n, lab);
+  else
+    {
+      free (lab);
+      lab = NULL;
+    }
+  free (rgb);
+  return lab;
 }
 
 void

@@ -42,6 +42,10 @@ typedef struct
 /* sRGB bytes to the engine's Lab + alpha (D65), opaque. */
 void slice_rgb8_to_lab (const uint8_t *rgb, size_t count, float *lab);
 
+/* The truth solid `name` (truth-solids.h) at n^3 for `seed`, in Lab +
+ * alpha; NULL if unknown or out of memory. Free it with free(). */
+float *slice_truth_lab (const char *name, size_t n, uint32_t seed);
+
 /* The slice across `axis` (0, 1, 2) at `index` of an n^3 Lab + alpha
  * volume, or with axis 3 the plane x = z (u along (1, 0, 1) at unit
  * spacing, bilinear, v along y). `out` holds n x n pixels. */

@@ -35,7 +35,6 @@
 #include "plane-steps.h"
 #include "seam-planes.h"
 #include "slice-figures.h"
-#include "truth-solids.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -102,31 +101,12 @@ print_row (const char *name, const char *what, const SliceFigures *f, double thi
           f->worst_slice_anisotropy, grid);
 }
 
-/* The truth solid `name` (truth-solids.h) at n^3 for `seed`, in Lab +
- * alpha; NULL if unknown or out of memory. */
-static float *
-render_lab (const char *name, size_t n, uint32_t seed)
-{
-  uint8_t *rgb = malloc (n * n * n * 3);
-  float *lab = malloc (n * n * n * TS_CHANNELS * sizeof (float));
-
-  if (rgb && lab && truth_solid_render (name, n, seed, rgb))
-    slice_rgb8_to_lab (rgb, n * n * n, lab);
-  else
-    {
-      free (lab);
-      lab = NULL;
-    }
-  free (rgb);
-  return lab;
-}
-
 /* The truth solid `name` drawn with another seed, measured against the
  * exemplar of `seed`'s: an independent sample of the same texture. */
 static bool
 print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t seed)
 {
-  float *sample = render_lab (name, n, seed + NEW_SAMPLE_SEED_OFFSET);
+  float *sample = slice_truth_lab (name, n, seed + NEW_SAMPLE_SEED_OFFSET);
   SliceFigures f;
   double thick = NAN;
   bool ok = sample && slice_figures (exemplar, sample, n, &f);
@@ -248,7 +228,7 @@ main (int argc, char **argv)
         status = 1;
       else if (!strstr (name, ".png"))
         {
-          truth = render_lab (name, n, seed);
+          truth = slice_truth_lab (name, n, seed);
           exemplar.pixels = malloc (n * n * TS_CHANNELS * sizeof (float));
           if (!truth || !exemplar.pixels)
             {

@@ -15,7 +15,6 @@
 #include "test-util.h"
 #include "metrics.h"
 #include "slice-figures.h"
-#include "truth-solids.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -43,23 +42,21 @@ typedef struct
 static bool
 measure_seed (const char *kind, uint32_t seed, Ratios *r)
 {
-  size_t n = SIDE, voxels = n * n * n;
-  uint8_t *rgb = malloc (voxels * 3);
-  float *truth = malloc (voxels * TS_CHANNELS * sizeof (float));
-  float *ours = malloc (voxels * TS_CHANNELS * sizeof (float));
+  size_t n = SIDE;
+  float *truth = slice_truth_lab (kind, n, seed);
+  float *ours = malloc (n * n * n * TS_CHANNELS * sizeof (float));
   TsImage exemplar = { n, n, NULL };
   SliceFigures t, o;
   TsSolidParams params;
   TsError error;
   bool ok = false;
 
-  if (!rgb || !truth || !ours || !truth_solid_render (kind, n, seed, rgb))
+  if (!truth || !ours)
     {
       CHECK (0, "%s: out of memory or unknown solid", kind);
-      free (rgb), free (truth), free (ours);
+      free (truth), free (ours);
       return false;
     }
-  slice_rgb8_to_lab (rgb, voxels, truth);
   exemplar.pixels = truth; /* its first n^2 voxels: the slice z = 0 */
   const TsImage *ex3[3] = { &exemplar, &exemplar, &exemplar };
   ts_solid_params_init (&params);
@@ -81,7 +78,6 @@ measure_seed (const char *kind, uint32_t seed, Ratios *r)
               r->completeness, r->axis_edges, t.median_axis_edges, r->seam);
       ok = true;
     }
-  free (rgb);
   free (truth);
   free (ours);
   return ok;
