@@ -1,7 +1,7 @@
-/* How thick the bodies of a two-phase solid's slices are against its
- * exemplar's (solid-shapes): the share of the minority phase that
- * survives PHASE_EROSIONS in-slice erosions, over every x, y and z
- * slice, divided by the exemplar's share.
+/* Two figures of a two-phase solid's slices (solid-shapes), the phases
+ * split at the middle of the exemplar's 5th and 95th lightness
+ * percentiles: how thick their bodies are against the exemplar's, and how
+ * many specks they hold.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #ifndef TS_PHASE_THICKNESS_H
 #define TS_PHASE_THICKNESS_H
@@ -19,5 +19,14 @@
  * and 95th lightness percentiles; NAN where the exemplar has no body
  * that thick. False if out of memory. */
 bool phase_thickness (const TsImage *exemplar, const float *volume, size_t n, double *ratio);
+
+/* A speck: a 4-connected piece of either phase of at most this many
+ * pixels, in a slice that wraps around. */
+#define PHASE_SPECK_PIXELS 4
+
+/* Specks per 1000 pixels over every x, y and z slice of `volume` (n^3
+ * Lab + alpha, periodic), split by `exemplar`'s lightness. False if out
+ * of memory. */
+bool phase_specks (const TsImage *exemplar, const float *volume, size_t n, double *per_thousand);
 
 #endif

@@ -31,7 +31,7 @@ import sys
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours|sample)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
                     r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+) "
                     r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan) streaks ([\d.]+) "
-                    r"grid ([\d.]+|nan)$")
+                    r"grid ([\d.]+|nan) specks ([\d.]+|nan)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -69,8 +69,8 @@ def run_seed(shapes, size, seed, kinds, new_sample):
         if m:
             figures[(m.group(1), m.group(2))] = dict(zip(
                 ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all", "thick",
-                 "planes_lo", "planes_hi", "streaks", "grid"),
-                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13))))
+                 "planes_lo", "planes_hi", "streaks", "grid", "specks"),
+                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -100,6 +100,8 @@ def main():
     thick = {k: [] for k in kinds}
     streaks = {k: [] for k in kinds}
     grid = {k: [] for k in kinds}
+    specks = {k: [] for k in kinds}
+    sample_specks = {k: [] for k in kinds}
     misses = {k: 0 for k in kinds}
     seam_misses, seam_in_spread = 0, 0
     sample_misses, shared_misses = 0, 0
@@ -122,6 +124,7 @@ def main():
                 for a, v in zip(AIMS, sample_row):
                     sample_values[(kind, a[0])].append(v)
                 sample_misses += len(sample)
+                sample_specks[kind].append(figures[(kind, "sample")]["specks"] / t["specks"])
                 shared_misses += sum(m in sample for m in marks)
                 sample = f"sample {sample or '-'} "
             if "M" in marks:
@@ -131,11 +134,12 @@ def main():
             thick[kind].append(o["thick"] / t["thick"])
             streaks[kind].append(o["streaks"] / t["streaks"])
             grid[kind].append(o["grid"])
+            specks[kind].append(o["specks"] / t["specks"])
             cells.append(f"{kind} {' '.join(f'{v:.2f}' for v in row)} {marks or '-'} "
                          f"[all {sharp_all[kind][-1]:.2f} thick {thick[kind][-1]:.2f} "
                          f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f} "
                          f"streaks {streaks[kind][-1]:.2f} "
-                         f"grid {o['grid']:.2f}/{t['grid']:.2f}] {sample}"
+                         f"grid {o['grid']:.2f}/{t['grid']:.2f} specks {specks[kind][-1]:.2f}] {sample}"
                          f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
     print("columns: sharpness coherence completeness axis-edges seam; "
@@ -143,7 +147,8 @@ def main():
           "phase thickness (phase-thickness.h); lines: our seam figure's range across the "
           "interior lines of the same slices (seam-planes.h); streaks: ours / truth largest "
           "edge anisotropy of any x, y or z slice (slice-figures.h); grid: ours/truth step "
-          "across a lattice of planes over the others (plane-steps.h); none is an aim]")
+          "across a lattice of planes over the others (plane-steps.h); specks: ours / truth "
+          "specks per 1000 pixels of every x, y and z slice (phase-thickness.h); none is an aim]")
     for kind in kinds:
         means, worst = mean_and_worst(values, kind, len(args.seeds))
         all_mean = sum(sharp_all[kind]) / len(args.seeds)
@@ -152,10 +157,12 @@ def main():
               f"all-slice sharpness mean {all_mean:.3f}, worst {min(sharp_all[kind]):.2f}; "
               f"thickness mean {thick_mean:.3f}; streaks mean "
               f"{sum(streaks[kind]) / len(args.seeds):.3f}, worst {max(streaks[kind]):.2f}; "
-              f"grid mean {sum(grid[kind]) / len(args.seeds):.3f}, worst {max(grid[kind]):.2f}")
+              f"grid mean {sum(grid[kind]) / len(args.seeds):.3f}, worst {max(grid[kind]):.2f}; "
+              f"specks mean {sum(specks[kind]) / len(args.seeds):.2f}, worst {max(specks[kind]):.2f}")
         if args.new_sample:
             means, worst = mean_and_worst(sample_values, kind, len(args.seeds))
-            print(f"{kind}, a new sample of the truth: mean {means}; worst {worst}")
+            print(f"{kind}, a new sample of the truth: mean {means}; worst {worst}; specks mean "
+                  f"{sum(sample_specks[kind]) / len(args.seeds):.2f}")
     print(f"missed in all: {sum(misses.values())} of {len(AIMS) * len(kinds) * len(args.seeds)}")
     print(f"seams over 1.10 no higher than an interior line's figure: {seam_in_spread} of {seam_misses}")
     if args.new_sample:
