@@ -32,6 +32,11 @@ TsStatus ts_solid_variance_map_build (const TsImage *ex, size_t radius, bool coa
                                       TsSolidVarianceMap *map);
 void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
 
+/* The lightness that splits `ex`'s opaque pixels into its two phases
+ * (dark mortar and light stones, spots and ground): midway between the
+ * 5th and 95th lightness percentiles. */
+float ts_solid_phase_split (const TsImage *ex);
+
 /* One slice orientation at one level. */
 typedef struct
 {
@@ -44,6 +49,7 @@ typedef struct
   const TsSolidVarianceMap *variance; /* of the pass's neighbourhoods   */
   uint32_t             *position_count; /* copies per exemplar pixel in
                                            `chosen` (position-histogram.c), or NULL */
+  float                 phase_split; /* lightness between its two phases (phase-split.c) */
 } TsSolidView;
 
 typedef struct
@@ -59,6 +65,7 @@ typedef struct
   float        continuation; /* E-step weight per continued neighbour (estep.c) */
   float        position_weight; /* of the position histogram's excess, 0 = off;
                                    needs `chosen` (position-histogram.c) */
+  bool         no_lone_voxels; /* the E-step's lone-voxel rule (estep.c) */
 } TsSolidLevel;
 
 /* The first orientation whose view shows the same exemplar as `axis`'s:

@@ -59,6 +59,7 @@ typedef struct
   size_t          opaque_count;
   float          *excess;
   uint32_t       *position_count;
+  float           phase_split;  /* of the current level (phase-split.c) */
   TsSolidIndex    index;      /* all neighbourhoods of the current pass */
   TsSolidVarianceMap variance; /* their colour variances                */
 } Exemplar;
@@ -282,6 +283,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
         }
       if (ex->opaque_count == 0)
         return TS_ERROR_TRANSPARENT_EXEMPLAR;
+      ex->phase_split = ts_solid_phase_split (img);
     }
   if (level >= run->levels)
     return TS_OK;
@@ -298,6 +300,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       view->opaque_count = ex->opaque_count;
       view->excess = run->params->histogram_matching ? ex->excess : NULL;
       view->position_count = ex->position_count;
+      view->phase_split = ex->phase_split;
     }
   return TS_OK;
 }
@@ -496,6 +499,7 @@ synthesize_level (Run *run, size_t level)
     ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed);
   level_free (&run->coarser, run->volume);
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;
+  run->level.no_lone_voxels = level == 0;
   for (size_t e = 0; e < run->exemplars; e++)
     {
       /* This level's candidates seed the next finer level's MRPM. */
