@@ -4,8 +4,6 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 
-#include <stdlib.h>
-
 /* Bins per unit of CIE L (0-100). */
 #define TS_PHASE_BINS_PER_L 10
 #define TS_PHASE_BINS (100 * TS_PHASE_BINS_PER_L + 1)
@@ -22,9 +20,11 @@ ts_solid_phase_split (const TsImage *ex)
     {
       const float *p = ex->pixels + i * TS_CHANNELS;
       float bin = p[0] * (float) TS_PHASE_BINS_PER_L;
-      if (p[3] <= 0.0f)
+      if (!(p[3] > 0.0f))
         continue;
-      bin = bin < 0.0f ? 0.0f : (bin > (float) (TS_PHASE_BINS - 1) ? (float) (TS_PHASE_BINS - 1) : bin);
+      /* Out-of-range and NaN lightness go to the end bins. */
+      bin = bin > 0.0f ? bin : 0.0f;
+      bin = bin < (float) (TS_PHASE_BINS - 1) ? bin : (float) (TS_PHASE_BINS - 1);
       count[(size_t) bin]++;
       opaque++;
     }
