@@ -58,6 +58,11 @@ def mean_and_worst(values, kind, count):
     return means, worst
 
 
+def ratio(ours, truth):
+    """ours / truth, NaN where the truth's figure is 0 (a small volume may hold no speck)."""
+    return ours / truth if truth > 0 else float("nan")
+
+
 def run_seed(shapes, size, seed, kinds, new_sample):
     out = subprocess.run([shapes, str(size), str(seed)] + (["-n"] if new_sample else []) + kinds,
                          capture_output=True, text=True)
@@ -124,7 +129,7 @@ def main():
                 for a, v in zip(AIMS, sample_row):
                     sample_values[(kind, a[0])].append(v)
                 sample_misses += len(sample)
-                sample_specks[kind].append(figures[(kind, "sample")]["specks"] / t["specks"])
+                sample_specks[kind].append(ratio(figures[(kind, "sample")]["specks"], t["specks"]))
                 shared_misses += sum(m in sample for m in marks)
                 sample = f"sample {sample or '-'} "
             if "M" in marks:
@@ -134,7 +139,7 @@ def main():
             thick[kind].append(o["thick"] / t["thick"])
             streaks[kind].append(o["streaks"] / t["streaks"])
             grid[kind].append(o["grid"])
-            specks[kind].append(o["specks"] / t["specks"])
+            specks[kind].append(ratio(o["specks"], t["specks"]))
             cells.append(f"{kind} {' '.join(f'{v:.2f}' for v in row)} {marks or '-'} "
                          f"[all {sharp_all[kind][-1]:.2f} thick {thick[kind][-1]:.2f} "
                          f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f} "

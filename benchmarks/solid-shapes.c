@@ -83,7 +83,7 @@ interior_planes (const TsImage *exemplar, const float *volume, size_t n)
 
 /* phase_specks' figure, NAN if out of memory. */
 static double
-specks (const TsImage *exemplar, const float *volume, size_t n)
+speck_figure (const TsImage *exemplar, const float *volume, size_t n)
 {
   double per_thousand;
   return phase_specks (exemplar, volume, n, &per_thousand) ? per_thousand : NAN;
@@ -125,7 +125,7 @@ print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t 
     {
       phase_thickness (exemplar, sample, n, &thick);
       print_row (name, "sample", &f, thick, interior_planes (exemplar, sample, n), lattice (sample, n),
-                 specks (exemplar, sample, n));
+                 speck_figure (exemplar, sample, n));
     }
   else
     fprintf (stderr, "solid-shapes: %s: could not render or measure a new sample\n", name);
@@ -296,7 +296,7 @@ main (int argc, char **argv)
                   thick = NAN;
                   phase_thickness (&exemplar, truth, n, &thick);
                   print_row (base, "truth", &f, thick, interior_planes (&exemplar, truth, n),
-                             lattice (truth, n), specks (&exemplar, truth, n));
+                             lattice (truth, n), speck_figure (&exemplar, truth, n));
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
@@ -305,7 +305,7 @@ main (int argc, char **argv)
                   thick = NAN;
                   phase_thickness (&exemplar, ours, n, &thick);
                   print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n),
-                             lattice (ours, n), specks (&exemplar, ours, n));
+                             lattice (ours, n), speck_figure (&exemplar, ours, n));
                 }
               if (truth && new_sample && !print_new_sample (base, &exemplar, n, seed))
                 status = 1;
