@@ -76,7 +76,8 @@ typedef struct
   uint8_t      batch;
   const float *face[TS_SOLID_AXES][2]; /* see face_neighbours, if continuing
                                           or avoiding lone voxels */
-  bool         by_phase;  /* keep the heaviest vote of each phase: */
+  bool         by_phase;  /* the level's no_lone_voxels: keep the
+                             heaviest vote of each phase: */
   float        phase_weight[2];  /* [1] dark, [0] light */
   int32_t      phase_source[2];
   int          phase_axis[2];
@@ -278,15 +279,14 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
       v->axis_weight[a] = 0.0f;
       v->axis_source[a] = -1;
     }
-  v->by_phase = level->no_lone_voxels;
-  for (int dark = 0; dark < 2; dark++)
+  for (int dark = 0; dark < 2 && v->by_phase; dark++)
     {
       v->phase_weight[dark] = 0.0f;
       v->phase_source[dark] = -1;
       v->phase_axis[dark] = 0;
     }
   collect (v, level, gu, gv, matches);
-  if (v->source >= 0 && level->no_lone_voxels)
+  if (v->source >= 0 && v->by_phase)
     avoid_lone_voxel (level, v);
   return v->source >= 0;
 }
@@ -306,6 +306,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
     memset (local, 0, sizeof local);
     v.batch_of = batch_of;
     v.batch = batch;
+    v.by_phase = level->no_lone_voxels;
 #pragma omp for schedule(static)
     for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
       for (size_t x = 0; x < n; x++)
