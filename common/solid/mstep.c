@@ -154,7 +154,7 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
             jv = ((size_t) i / cu) % cv;
             t = (size_t) i / cu / cv;
           }
-        if (t % TS_SOLID_SLICE_SPACING != t_offset % TS_SOLID_SLICE_SPACING)
+        if (!ts_solid_slice_searched (t, t_offset))
           {
             matches[i].centre = -1;
             matches[i].weight = 0.0f;

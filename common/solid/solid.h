@@ -117,6 +117,14 @@ ts_solid_match_index (int axis, size_t n, size_t cu, size_t cv, size_t t, size_t
  * between are shaped by the other orientations (Kopf et al. 2007). */
 #define TS_SOLID_SLICE_SPACING 2
 
+/* Whether an orientation whose searched slices start at `t_offset`
+ * searches slice t this iteration (the others' matches are all empty). */
+static inline bool
+ts_solid_slice_searched (size_t t, size_t t_offset)
+{
+  return t % TS_SOLID_SLICE_SPACING == t_offset % TS_SOLID_SLICE_SPACING;
+}
+
 /* M-step of one orientation: the best exemplar neighbourhood for the
  * slice neighbourhood of every centre (the slices t = t_offset modulo
  * TS_SOLID_SLICE_SPACING, sparse grid gu x gv within them), among the
@@ -176,13 +184,15 @@ void ts_solid_position_excess (TsSolidLevel *level);
 /* --- E-step ---------------------------------------------------------------- */
 
 /* Voxels whose `batch_of` entry equals `batch` become the vote of the
- * best-matched slice neighbourhood covering them (robust weight, lowered
+ * best-matched slice neighbourhood covering them (`matches` of the
+ * orientations' M-steps, with their `t_offset`s; robust weight, lowered
  * by the histogram excess); each orientation's source follows its own
  * best vote, and `chosen` (if any) records the vote; with a position
  * weight the position counts follow it. With `histogram`, changes are
  * added to `delta`. Returns the number of voxels whose value changed. */
 size_t ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
-                       TsSolidMatch *const matches[TS_SOLID_AXES], const uint8_t *batch_of,
+                       TsSolidMatch *const matches[TS_SOLID_AXES],
+                       const size_t t_offset[TS_SOLID_AXES], const uint8_t *batch_of,
                        uint8_t batch, const TsSolidHistogram *histogram,
                        TsSolidHistogramDelta delta);
 

@@ -345,6 +345,7 @@ typedef struct
 {
   TsAxisGrid    gu, gv;
   TsSolidMatch *matches[TS_SOLID_AXES];
+  size_t        t_offset[TS_SOLID_AXES]; /* each orientation's searched slices */
 } Iteration;
 
 static void
@@ -383,6 +384,7 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
         continue;
       /* Each orientation its own slices of the sparse grid. */
       size_t t_offset = (stream >> (16 + a)) % TS_SOLID_SLICE_SPACING;
+      it.t_offset[a] = t_offset;
       it.matches[a] = malloc (n * it.gu.centres * it.gv.centres * sizeof (TsSolidMatch));
       status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, t_offset,
                                                stream + (uint32_t) a, it.matches[a], &run->midway)
@@ -398,7 +400,8 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
         ts_solid_histogram_excess (histogram, l);
       if (histogram && l->position_weight > 0.0f)
         ts_solid_position_excess (l);
-      *changed += ts_solid_estep (l, &it.gu, &it.gv, it.matches, batch_of, b, histogram, delta);
+      *changed += ts_solid_estep (l, &it.gu, &it.gv, it.matches, it.t_offset, batch_of, b,
+                                  histogram, delta);
       if (histogram)
         ts_solid_histogram_apply (histogram, delta);
       if (ts_cancel_poll (&run->midway))
