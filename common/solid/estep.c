@@ -85,7 +85,7 @@ typedef struct
 } Votes;
 
 /* memcmp () == 0 for two pixels, inline: the E-step tests several pairs
- * per vote, and the library call cost 128^3 about 5 % of its time. */
+ * per vote, and the library calls took about 5 % of a 128^3 run. */
 static inline bool
 same_pixel (const float *a, const float *b)
 {
@@ -235,8 +235,7 @@ collect_axis (Votes *v, const TsSolidLevel *level, int axis, const TsAxisGrid *g
 }
 
 /* Votes of every orientation that searched the voxel's slice: the
- * others' matches there are all empty, and skipping them takes a third
- * off the E-step's time. */
+ * others' matches there are all empty, so their loops are skipped. */
 static void
 collect (Votes *v, const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
          TsSolidMatch *const matches[TS_SOLID_AXES])
