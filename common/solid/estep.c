@@ -84,18 +84,6 @@ typedef struct
   int          phase_axis[2];
 } Votes;
 
-/* memcmp () == 0 for two pixels, inline: the E-step tests several pairs
- * per vote, and the library calls took about 5 % of a 128^3 run. */
-static inline bool
-same_pixel (const float *a, const float *b)
-{
-  uint64_t x[2], y[2];
-
-  memcpy (x, a, sizeof x);
-  memcpy (y, b, sizeof y);
-  return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
-}
-
 /* Strictly heavier wins, so among equal weights the first vote in the
  * fixed collection order does: the same at any thread count. */
 static void
@@ -107,7 +95,7 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
     weight /= 1.0f + view->excess[source];
   if (value[3] <= 0.0f || !(weight > 0.0f))
     return;
-  if (same_pixel (value, v->current))
+  if (ts_solid_same_pixel (value, v->current))
     weight *= TS_SOLID_INERTIA;
   if (v->by_phase)
     {
@@ -185,7 +173,7 @@ continued (const TsImage *ex, int32_t source, const Neighbour *next, size_t neig
     {
       ptrdiff_t x = sx + next[k].dx, y = sy + next[k].dy;
       if (x >= 0 && y >= 0 && x < w && y < h
-          && same_pixel (next[k].value, ex->pixels + (size_t) (y * w + x) * TS_CHANNELS))
+          && ts_solid_same_pixel (next[k].value, ex->pixels + (size_t) (y * w + x) * TS_CHANNELS))
         count++;
     }
   return count;
@@ -347,7 +335,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
               level->chosen[p] = after;
             }
           chosen = level->view[v.axis].exemplar->pixels + (size_t) v.source * TS_CHANNELS;
-          if (same_pixel (value, chosen))
+          if (ts_solid_same_pixel (value, chosen))
             continue;
           changed++;
           if (histogram)

@@ -7,6 +7,9 @@
 #include "engine/level.h"
 #include "exemplar-index.h"
 
+#include <stdint.h>
+#include <string.h>
+
 #define TS_SOLID_AXES 3
 /* Kopf et al. 2007 use 16 bins per channel. */
 #define TS_SOLID_HISTOGRAM_BINS 16
@@ -86,6 +89,20 @@ typedef struct
   int32_t centre;
   float   weight;
 } TsSolidMatch;
+
+/* Whether two pixels are bit for bit the same, as memcmp () == 0 but
+ * inline: the E-step tests several pairs per vote, and the library calls
+ * took about 5 % of a 128^3 run. */
+static inline bool
+ts_solid_same_pixel (const float *a, const float *b)
+{
+  uint64_t x[2], y[2];
+
+  _Static_assert (sizeof x == TS_CHANNELS * sizeof (float), "a pixel is 16 bytes");
+  memcpy (x, a, sizeof x);
+  memcpy (y, b, sizeof y);
+  return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
+}
 
 /* The in-slice axes (u, v) of the slices orthogonal to `axis`. */
 static inline void

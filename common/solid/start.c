@@ -130,9 +130,9 @@ winner (const TsSolidLevel *c, size_t parent)
 {
   for (int a = 0; a < TS_SOLID_AXES; a++)
     if (c->source[a]
-        && memcmp (c->value + parent * TS_CHANNELS,
-                   c->view[a].exemplar->pixels + (size_t) c->source[a][parent] * TS_CHANNELS,
-                   TS_CHANNELS * sizeof (float)) == 0)
+        && ts_solid_same_pixel (c->value + parent * TS_CHANNELS,
+                                c->view[a].exemplar->pixels
+                                  + (size_t) c->source[a][parent] * TS_CHANNELS))
       return a;
   return -1;
 }

@@ -383,10 +383,9 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
       if (!l->source[a])
         continue;
       /* Each orientation its own slices of the sparse grid. */
-      size_t t_offset = (stream >> (16 + a)) % TS_SOLID_SLICE_SPACING;
-      it.t_offset[a] = t_offset;
+      it.t_offset[a] = (stream >> (16 + a)) % TS_SOLID_SLICE_SPACING;
       it.matches[a] = malloc (n * it.gu.centres * it.gv.centres * sizeof (TsSolidMatch));
-      status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, t_offset,
+      status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, it.t_offset[a],
                                                stream + (uint32_t) a, it.matches[a], &run->midway)
                              : TS_ERROR_OUT_OF_MEMORY;
       if (status == TS_OK && !report (run, share, "optimizing volume"))
