@@ -185,7 +185,7 @@ collect_axis (Votes *v, const TsSolidLevel *level, int axis, const TsAxisGrid *g
               const TsAxisGrid *gv, const TsSolidMatch *matches, size_t t, size_t pu, size_t pv)
 {
   const TsSolidView *view = &level->view[axis];
-  size_t ew = view->exemplar->width, n = level->n, cu = gu->centres, cv = gv->centres;
+  size_t ew = view->exemplar->width, cu = gu->centres, cv = gv->centres;
   Neighbour next[4];
   size_t neighbours = level->continuation > 0.0f ? slice_neighbours (v, axis, next) : 0;
 
@@ -206,7 +206,7 @@ collect_axis (Votes *v, const TsSolidLevel *level, int axis, const TsAxisGrid *g
               ptrdiff_t dv = tv - ts_axis_grid_centre (gv, jv);
               for (size_t ju = ju_lo; ju <= ju_hi; ju++)
                 {
-                  const TsSolidMatch *m = &matches[ts_solid_match_index (axis, n, cu, cv, t, ju, jv)];
+                  const TsSolidMatch *m = &matches[ts_solid_match_index (cu, cv, t, ju, jv)];
                   if (m->centre < 0)
                     continue;
                   ptrdiff_t du = tu - ts_axis_grid_centre (gu, ju);
@@ -293,6 +293,60 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
   return v->source >= 0;
 }
 
+/* In-batch voxels whose data are fetched ahead of their vote. */
+#define TS_SOLID_PREFETCH_AHEAD 4
+
+#if defined(__GNUC__)
+#define prefetch(address, write) __builtin_prefetch ((address), (write), 3)
+#else
+#define prefetch(address, write) ((void) (address))
+#endif
+
+/* Asks for the cache lines voxel p's vote will read and write. A batch is
+ * a random sixteenth of the voxels, so its voxels share few lines and each
+ * vote waited on a dozen misses: a 128^3 E-step took three times as long
+ * as one sweep of all voxels in order. */
+static void
+prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
+                TsSolidMatch *const matches[TS_SOLID_AXES], const size_t t_offset[TS_SOLID_AXES],
+                size_t p)
+{
+  size_t n = level->n, xyz[3] = { p % n, p / n % n, p / n / n };
+
+  prefetch (level->value + p * TS_CHANNELS, 1);
+  if (level->continuation > 0.0f || level->no_lone_voxels)
+    for (int d = 1; d < TS_SOLID_AXES; d++)
+      {
+        size_t stride = ts_solid_stride (n, d), at = xyz[d] * stride;
+        size_t before = (xyz[d] + n - 1) % n * stride, after = (xyz[d] + 1) % n * stride;
+        prefetch (level->value + (p - at + before) * TS_CHANNELS, 0);
+        prefetch (level->value + (p - at + after) * TS_CHANNELS, 0);
+      }
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    if (level->source[a])
+      prefetch (level->source[a] + p, 1);
+  if (level->chosen)
+    prefetch (level->chosen + p, 1);
+  for (int axis = 0; axis < TS_SOLID_AXES; axis++)
+    {
+      int u, w;
+      size_t ju_lo, ju_hi, jv_lo, jv_hi;
+      if (!matches[axis] || !ts_solid_slice_searched (xyz[axis], t_offset[axis]))
+        continue;
+      ts_solid_plane_axes (axis, &u, &w);
+      if (!ts_axis_grid_covering (gu, (ptrdiff_t) xyz[u], &ju_lo, &ju_hi)
+          || !ts_axis_grid_covering (gv, (ptrdiff_t) xyz[w], &jv_lo, &jv_hi))
+        continue;
+      for (size_t jv = jv_lo; jv <= jv_hi; jv++)
+        {
+          const TsSolidMatch *row = matches[axis] + ts_solid_match_index (gu->centres, gv->centres,
+                                                                          xyz[axis], 0, jv);
+          prefetch (row + ju_lo, 0);
+          prefetch (row + ju_hi, 0);
+        }
+    }
+}
+
 size_t
 ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
                 TsSolidMatch *const matches[TS_SOLID_AXES], const size_t t_offset[TS_SOLID_AXES],
@@ -311,6 +365,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
     v.batch_of = batch_of;
     v.batch = batch;
     v.by_phase = level->no_lone_voxels;
+    size_t ahead = 0, pending = 0; /* next voxel to prefetch; prefetched, not voted */
 #pragma omp for schedule(static)
     for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
       for (size_t x = 0; x < n; x++)
@@ -320,7 +375,19 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
           float *value = level->value + p * TS_CHANNELS;
           const float *chosen;
 
-          if (batch_of[p] != batch || !vote_voxel (level, gu, gv, matches, xyz, value, &v))
+          if (batch_of[p] != batch)
+            continue;
+          if (p < ahead)
+            pending--;
+          else
+            ahead = p + 1, pending = 0;
+          for (; pending < TS_SOLID_PREFETCH_AHEAD && ahead < n * n * n; ahead++)
+            if (batch_of[ahead] == batch)
+              {
+                prefetch_voxel (level, gu, gv, matches, t_offset, ahead);
+                pending++;
+              }
+          if (!vote_voxel (level, gu, gv, matches, xyz, value, &v))
             continue;
           for (int a = 0; a < TS_SOLID_AXES; a++)
             if (level->source[a] && v.axis_source[a] >= 0)

@@ -109,7 +109,7 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
 {
   const TsImage *ex = level->view[axis].exemplar;
   size_t n = level->n, cu = gu->centres, cv = gv->centres;
-  size_t radius = pass->patch / 2, count = n * cu * cv;
+  size_t radius = pass->patch / 2, count = ts_solid_match_slices (n) * cu * cv;
   size_t ex_pixels = ts_image_pixel_count (ex);
   float pixels_per_patch = (float) (pass->patch * pass->patch);
   Plane plane = { level, axis, 0, 0, 0 };
@@ -142,19 +142,10 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
         if (stop || ts_cancel_poll (cancel))
           continue;
         /* Inverse of ts_solid_match_index. */
-        if (axis == 0)
-          {
-            t = (size_t) i % n;
-            ju = ((size_t) i / n) % cu;
-            jv = (size_t) i / n / cu;
-          }
-        else
-          {
-            ju = (size_t) i % cu;
-            jv = ((size_t) i / cu) % cv;
-            t = (size_t) i / cu / cv;
-          }
-        if (!ts_solid_slice_searched (t, t_offset))
+        ju = (size_t) i % cu;
+        jv = ((size_t) i / cu) % cv;
+        t = (size_t) i / cu / cv * TS_SOLID_SLICE_SPACING + t_offset % TS_SOLID_SLICE_SPACING;
+        if (t >= n)
           {
             matches[i].centre = -1;
             matches[i].weight = 0.0f;

@@ -97,9 +97,10 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
         bytes += ex * 8.0;                          /* variance map and its median */
       }
   /* Finest level: the result volume (which holds the values), three
-   * sources, the matches of three orientations on a grid of spacing 2
-   * and the batch map; plus the coarser level's values and sources. */
-  bytes += n3 * (16.0 + 12.0 + 3.0 * 8.0 / 4.0 + 1.0);
+   * sources, the matches of three orientations on a grid of spacing 2 in
+   * every second slice and the batch map; plus the coarser level's
+   * values and sources. */
+  bytes += n3 * (16.0 + 12.0 + 3.0 * 8.0 / 8.0 + 1.0);
   bytes += n3 / 8.0 * (16.0 + 12.0);
   if (params->record_sources)
     bytes += n3 * sizeof (TsSolidSource);

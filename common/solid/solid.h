@@ -118,15 +118,6 @@ ts_solid_stride (size_t n, int axis)
   return axis == 0 ? 1 : (axis == 1 ? n : n * n);
 }
 
-/* Where the match of orientation `axis`, slice t, grid centre (ju, jv) is
- * stored: along x the slice index runs fastest, so that consecutive
- * neighbourhoods share cache lines; otherwise the in-slice u does. */
-static inline size_t
-ts_solid_match_index (int axis, size_t n, size_t cu, size_t cv, size_t t, size_t ju, size_t jv)
-{
-  return axis == 0 ? (jv * cu + ju) * n + t : (t * cv + jv) * cu + ju;
-}
-
 /* Slices along its own axis that an orientation searches in one
  * iteration: every TS_SOLID_SLICE_SPACING-th. With every slice searched,
  * neighbouring slices find the same exemplar pieces and the volume
@@ -135,19 +126,36 @@ ts_solid_match_index (int axis, size_t n, size_t cu, size_t cv, size_t t, size_t
 #define TS_SOLID_SLICE_SPACING 2
 
 /* Whether an orientation whose searched slices start at `t_offset`
- * searches slice t this iteration (the others' matches are all empty). */
+ * searches slice t this iteration (only those have matches). */
 static inline bool
 ts_solid_slice_searched (size_t t, size_t t_offset)
 {
   return t % TS_SOLID_SLICE_SPACING == t_offset % TS_SOLID_SLICE_SPACING;
 }
 
+/* Slices an orientation's matches have room for, whatever its offset. */
+static inline size_t
+ts_solid_match_slices (size_t n)
+{
+  return (n + TS_SOLID_SLICE_SPACING - 1) / TS_SOLID_SLICE_SPACING;
+}
+
+/* Where the match of searched slice t, grid centre (ju, jv) is stored:
+ * slice by slice, u fastest. The E-step visits a random sixteenth of the
+ * voxels per batch, so the matches covering one voxel should share cache
+ * lines, not those of the voxels next to it. */
+static inline size_t
+ts_solid_match_index (size_t cu, size_t cv, size_t t, size_t ju, size_t jv)
+{
+  return (t / TS_SOLID_SLICE_SPACING * cv + jv) * cu + ju;
+}
+
 /* M-step of one orientation: the best exemplar neighbourhood for the
  * slice neighbourhood of every centre (the slices t = t_offset modulo
  * TS_SOLID_SLICE_SPACING, sparse grid gu x gv within them), among the
  * k-coherence candidates and, with the view's index, the nearest of all
- * exemplar neighbourhoods. `matches` has n * gu->centres * gv->centres
- * entries; those of other slices get centre -1. */
+ * exemplar neighbourhoods. `matches` has ts_solid_match_slices (n) *
+ * gu->centres * gv->centres entries (ts_solid_match_index). */
 TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu,
                          const TsAxisGrid *gv, const TsPass *pass, size_t k_use,
                          size_t t_offset, uint32_t seed_stream, TsSolidMatch *matches,
