@@ -384,7 +384,8 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
         continue;
       /* Each orientation its own slices of the sparse grid. */
       it.t_offset[a] = (stream >> (16 + a)) % TS_SOLID_SLICE_SPACING;
-      it.matches[a] = malloc (ts_solid_match_slices (n) * it.gu.centres * it.gv.centres * sizeof (TsSolidMatch));
+      it.matches[a] = malloc (ts_solid_match_slices (n) * it.gu.centres * it.gv.centres
+                              * sizeof (TsSolidMatch));
       status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, it.t_offset[a],
                                                stream + (uint32_t) a, it.matches[a], &run->midway)
                              : TS_ERROR_OUT_OF_MEMORY;
