@@ -314,6 +314,9 @@ prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGri
   size_t n = level->n, xyz[3] = { p % n, p / n % n, p / n / n };
 
   prefetch (level->value + p * TS_CHANNELS, 1);
+  /* face_neighbours' lines, wrapped here whatever the border rule (a
+   * wrong guess at a mirrored border only costs a miss): its
+   * ts_border_index made the whole 128^3 run 1.5 s (6 %) slower. */
   if (level->continuation > 0.0f || level->no_lone_voxels)
     for (int d = 1; d < TS_SOLID_AXES; d++)
       {
@@ -353,7 +356,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
                 const uint8_t *batch_of, uint8_t batch, const TsSolidHistogram *histogram,
                 TsSolidHistogramDelta delta)
 {
-  size_t n = level->n, changed = 0;
+  size_t n = level->n, voxels = n * n * n, changed = 0;
 
 #pragma omp parallel reduction(+:changed) if (n >= TS_SOLID_PARALLEL_EDGE)
   {
@@ -381,7 +384,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
             pending--;
           else
             ahead = p + 1, pending = 0;
-          for (; pending < TS_SOLID_PREFETCH_AHEAD && ahead < n * n * n; ahead++)
+          for (; pending < TS_SOLID_PREFETCH_AHEAD && ahead < voxels; ahead++)
             if (batch_of[ahead] == batch)
               {
                 prefetch_voxel (level, gu, gv, matches, t_offset, ahead);
