@@ -270,12 +270,12 @@ propagate_pixel (const Ctx *c, Scratch *s, const int32_t *prev, const float *pre
 }
 
 static int
-poll_cancel (int *stop, const volatile int *cancel)
+poll_cancel (int *stop, TsCancel *cancel)
 {
   int v;
 #pragma omp atomic read
   v = *stop;
-  if (!v && cancel && *cancel)
+  if (!v && ts_cancel_poll (cancel))
     {
       v = 1;
 #pragma omp atomic write
@@ -361,7 +361,7 @@ ts_candidate_set_free (TsCandidateSet *set)
 
 TsStatus
 ts_mrpm_level (const TsPyramid *pyramid, size_t level, const TsCandidateSet *coarser,
-               size_t k, const TsMrpmOptions *options, const volatile int *cancel,
+               size_t k, const TsMrpmOptions *options, TsCancel *cancel,
                TsCandidateSet *out)
 {
   TsMrpmOptions defaults;
@@ -549,7 +549,7 @@ ts_mrpm_level (const TsPyramid *pyramid, size_t level, const TsCandidateSet *coa
                              odist + ((size_t) y * c.w + x) * k);
         }
     }
-  if (stop || (cancel && *cancel))
+  if (stop || ts_cancel_requested (cancel))
     {
       status = TS_ERROR_CANCELLED;
       goto fail;

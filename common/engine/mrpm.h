@@ -4,6 +4,7 @@
 #ifndef TS_MRPM_H
 #define TS_MRPM_H
 
+#include "cancel.h"
 #include "pyramid.h"
 
 /* For every pixel of one exemplar pyramid level, the `k` most similar
@@ -48,15 +49,15 @@ void     ts_mrpm_options_init (TsMrpmOptions *options);
  * coarsest level). Fully transparent pixels (alpha 0) never appear as
  * candidates. Candidates are centres whose patch lies inside the level;
  * pixels near the border get the candidates of their clamped centre.
- * `cancel` (may be NULL) is polled; when it becomes nonzero the function
- * returns TS_ERROR_CANCELLED. Threads: OpenMP over rows; the result does
+ * `cancel` (may be NULL) is polled between rows (thread 0 asks its
+ * callback); once it is raised the function returns TS_ERROR_CANCELLED. Threads: OpenMP over rows; the result does
  * not depend on the thread count. `options` may be NULL (defaults). */
 TsStatus ts_mrpm_level (const TsPyramid       *pyramid,
                         size_t                 level,
                         const TsCandidateSet  *coarser,
                         size_t                 k,
                         const TsMrpmOptions   *options,
-                        const volatile int    *cancel,
+                        TsCancel              *cancel,
                         TsCandidateSet        *out);
 
 void     ts_candidate_set_free (TsCandidateSet *set);

@@ -26,6 +26,7 @@ typedef struct
   void           *user_data;
   double          done, total;   /* work units, for the progress fraction */
   TsCancel        cancel;        /* lets the steps ask `progress` midway    */
+  const char     *stage;         /* what a midway report says             */
 } Run;
 
 static bool
@@ -42,7 +43,8 @@ report (Run *run, double units, const char *stage)
 static bool
 report_midway (void *data)
 {
-  return report (data, 0.0, "optimizing");
+  Run *run = data;
+  return report (run, 0.0, run->stage);
 }
 
 static size_t
@@ -368,18 +370,19 @@ synthesize_level (Run *run, Work *w, size_t level)
   TsMrpmOptions options;
   TsLevelPlan plan;
   TsStatus status;
-  volatile int cancel = 0;
 
   ts_schedule_level (params, level, w->pyramid.levels, ex->width, ex->height, &plan);
   ts_mrpm_options_init (&options);
+  run->stage = "matching exemplar";
   status = ts_mrpm_level (&w->pyramid, level, level + 1 < w->pyramid.levels ? &w->coarser_candidates : NULL,
-                          plan.k_level, &options, &cancel, &w->candidates);
+                          plan.k_level, &options, &run->cancel, &w->candidates);
   if (status != TS_OK)
     return status;
   ts_candidate_set_free (&w->coarser_candidates);
   if (!report (run, (double) level_side (params->output_width, level) *
                (double) level_side (params->output_height, level), "matching exemplar"))
     return TS_ERROR_CANCELLED;
+  run->stage = "optimizing";
 
   memset (state, 0, sizeof *state);
   state->exemplar = ex;
@@ -461,7 +464,8 @@ TsStatus
 ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
                TsProgressFunc progress, void *user_data, TsError *error)
 {
-  Run run = { .params = params, .progress = progress, .user_data = user_data };
+  Run run = { .params = params, .progress = progress, .user_data = user_data,
+             .stage = "matching exemplar" };
   Work w;
   TsStatus status;
 

@@ -12,6 +12,8 @@
 /* Points per leaf: small enough to prune well, large enough to keep the
  * tree shallow. */
 #define LEAF_POINTS 8
+/* Nodes at least this large ask the cancel callback (its clock costs). */
+#define POLL_POINTS 4096
 
 void
 ts_solid_index_free (TsSolidIndex *index)
@@ -82,9 +84,9 @@ select_median (const TsSolidIndex *index, uint32_t *order, size_t lo, size_t hi,
 }
 
 /* Splits [begin, end) along its widest projected dimension; returns the
- * node. */
+ * node. A cancel turns the nodes not yet split into leaves. */
 static int32_t
-build_node (TsSolidIndex *index, uint32_t *order, size_t begin, size_t end)
+build_node (TsSolidIndex *index, uint32_t *order, size_t begin, size_t end, TsCancel *cancel)
 {
   int32_t id = (int32_t) index->nodes++;
   TsSolidIndexNode *node = &index->node[id];
@@ -95,7 +97,8 @@ build_node (TsSolidIndex *index, uint32_t *order, size_t begin, size_t end)
   node->left = node->right = -1;
   node->dim = 0;
   node->split = 0.0f;
-  if (end - begin <= LEAF_POINTS)
+  if (end - begin <= LEAF_POINTS
+      || (end - begin >= POLL_POINTS ? ts_cancel_poll (cancel) : ts_cancel_requested (cancel)))
     return id;
   for (size_t j = 0; j < TS_SOLID_INDEX_DIMS; j++)
     lo[j] = hi[j] = coordinate (index, order, begin, (uint32_t) j);
@@ -115,8 +118,8 @@ build_node (TsSolidIndex *index, uint32_t *order, size_t begin, size_t end)
   size_t mid = begin + (end - begin) / 2;
   select_median (index, order, begin, end, mid, node->dim);
   float split = coordinate (index, order, mid, node->dim);
-  int32_t left = build_node (index, order, begin, mid);
-  int32_t right = build_node (index, order, mid, end);
+  int32_t left = build_node (index, order, begin, mid, cancel);
+  int32_t right = build_node (index, order, mid, end, cancel);
   /* index->node may not move: it is allocated at its final size. */
   node = &index->node[id];
   node->split = split;
@@ -126,7 +129,8 @@ build_node (TsSolidIndex *index, uint32_t *order, size_t begin, size_t end)
 }
 
 TsStatus
-ts_solid_index_build (const TsPyramid *pyramid, size_t level, size_t patch, TsSolidIndex *index)
+ts_solid_index_build (const TsPyramid *pyramid, size_t level, size_t patch, TsCancel *cancel,
+                      TsSolidIndex *index)
 {
   const TsImage *im = &pyramid->level[level];
   TsMrpmFeature feature;
@@ -182,7 +186,7 @@ ts_solid_index_build (const TsPyramid *pyramid, size_t level, size_t patch, TsSo
       }
 #pragma omp for schedule(static)
     for (ptrdiff_t i = 0; i < (ptrdiff_t) count; i++)
-      if (patch_values)
+      if (patch_values && !((i & 255) == 0 ? ts_cancel_poll (cancel) : ts_cancel_requested (cancel)))
         {
           size_t p = (size_t) list[i];
           ts_mrpm_feature_extract (&feature, p % w, p / w, patch_values);
@@ -194,7 +198,12 @@ ts_solid_index_build (const TsPyramid *pyramid, size_t level, size_t patch, TsSo
     goto out;
   for (size_t i = 0; i < count; i++)
     order[i] = (uint32_t) i;
-  build_node (index, order, 0, count);
+  build_node (index, order, 0, count, cancel);
+  if (ts_cancel_requested (cancel))
+    {
+      status = TS_ERROR_CANCELLED;
+      goto out;
+    }
   /* Points and centres in tree order, so leaves are contiguous. */
   for (size_t i = 0; i < count; i++)
     {

@@ -6,6 +6,7 @@
 #ifndef TS_SOLID_EXEMPLAR_INDEX_H
 #define TS_SOLID_EXEMPLAR_INDEX_H
 
+#include "engine/cancel.h"
 #include "engine/pyramid.h"
 
 #include <stdint.h>
@@ -37,9 +38,10 @@ typedef struct
 
 /* Indexes every neighbourhood of side `patch` that lies inside level
  * `level` of `pyramid` with an opaque centre. A level too small for the
- * patch, or without opaque centres, leaves the index empty (patch 0). */
+ * patch, or without opaque centres, leaves the index empty (patch 0).
+ * `cancel` (may be NULL) is polled while projecting: TS_ERROR_CANCELLED. */
 TsStatus ts_solid_index_build (const TsPyramid *pyramid, size_t level, size_t patch,
-                               TsSolidIndex *index);
+                               TsCancel *cancel, TsSolidIndex *index);
 void     ts_solid_index_free (TsSolidIndex *index);
 
 /* Projects a gathered neighbourhood (patch^2 pixels, TS_CHANNELS each). */

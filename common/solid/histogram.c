@@ -141,11 +141,13 @@ ts_solid_histogram_excess (const TsSolidHistogram *h, TsSolidLevel *level)
     {
       const TsImage *ex = level->view[a].exemplar;
       float *out = level->view[a].excess;
-      if (!ex || !out)
+      /* Views of one exemplar share its excess: computed once. */
+      if (!out || !first_use (level, a))
         continue;
-      for (size_t i = 0; i < ts_image_pixel_count (ex); i++)
+#pragma omp parallel for schedule(static)
+      for (ptrdiff_t i = 0; i < (ptrdiff_t) ts_image_pixel_count (ex); i++)
         {
-          const float *p = ex->pixels + i * TS_CHANNELS;
+          const float *p = ex->pixels + (size_t) i * TS_CHANNELS;
           float sum = 0.0f;
           for (int c = 0; c < 3; c++)
             sum += excess[c][bin_of (h, c, p[c])];

@@ -72,6 +72,7 @@ typedef struct
   double               done, total;
   volatile int         cancel;
   TsCancel             midway;  /* raised with `cancel`; lets the steps ask midway */
+  const char          *stage;   /* what a midway report says */
   Exemplar             exemplar[TS_SOLID_AXES];
   int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
   size_t               exemplars;
@@ -98,11 +99,12 @@ report (Run *run, double units, const char *stage)
   return !run->cancel;
 }
 
-/* Asked by OpenMP thread 0 (the caller's thread) from inside the M-step. */
+/* Asked by OpenMP thread 0 (the caller's thread) from inside the steps. */
 static bool
 report_midway (void *data)
 {
-  return report (data, 0.0, "optimizing volume");
+  Run *run = data;
+  return report (run, 0.0, run->stage);
 }
 
 static size_t
@@ -254,7 +256,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       size_t pixels = ts_image_pixel_count (img);
       TsStatus status = ts_mrpm_level (&ex->pyramid, level,
                                        level + 1 < run->ex_levels ? &ex->coarser_candidates : NULL,
-                                       plan->k_level, &options, &run->cancel, &ex->candidates);
+                                       plan->k_level, &options, &run->midway, &ex->candidates);
       if (status != TS_OK)
         return status;
       ts_candidate_set_free (&ex->coarser_candidates);
@@ -423,7 +425,7 @@ index_exemplars (Run *run, size_t level, size_t patch)
       Exemplar *ex = &run->exemplar[e];
       TsStatus status;
       ts_solid_index_free (&ex->index);
-      status = ts_solid_index_build (&ex->pyramid, level, patch, &ex->index);
+      status = ts_solid_index_build (&ex->pyramid, level, patch, &run->midway, &ex->index);
       if (status == TS_OK)
         status = ts_solid_variance_map_build (&ex->pyramid.level[level], patch / 2, level > 0,
                                               &ex->variance);
@@ -488,10 +490,12 @@ synthesize_level (Run *run, size_t level)
   memset (&run->level, 0, sizeof run->level);
 
   plan_level (run, level, &plan);
+  run->stage = "matching exemplar";
   status = prepare_views (run, level, &plan);
   if (status == TS_OK && !report (run, (double) cube (level_edge (run->params->size, level)),
                                   "matching exemplar"))
     status = TS_ERROR_CANCELLED;
+  run->stage = "optimizing volume";
   if (status == TS_OK)
     status = level_alloc (run, level);
   if (status != TS_OK)
@@ -533,6 +537,7 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
   run.progress = progress;
   run.user_data = user_data;
   run.volume = volume;
+  run.stage = "matching exemplar";
   ts_cancel_init (&run.midway, progress ? report_midway : NULL, &run);
   status = prepare_exemplars (&run, exemplars);
   if (status == TS_OK)

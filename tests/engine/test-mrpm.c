@@ -33,6 +33,14 @@ k_for_level (size_t level)
   return level == 0 ? 8 : 24;
 }
 
+/* A cancel callback that counts its calls and says stop. */
+static bool
+say_stop (void *data)
+{
+  ++*(int *) data;
+  return false;
+}
+
 static void
 build_pyramid (const TsImage *lab, TsPyramid *pyramid)
 {
@@ -332,9 +340,17 @@ test_tiny (void)
   CHECK (ts_mrpm_level (&pyramid, 1, &sets[1], 3, &o, NULL, &sets[0]) == TS_ERROR_INVALID_ARGUMENT,
          "coarser of the wrong level");
   CHECK (ts_mrpm_level (&pyramid, 1, NULL, 0, &o, NULL, &sets[0]) == TS_ERROR_INVALID_ARGUMENT, "k = 0");
-  volatile int cancel = 1;
+  TsCancel cancel;
+  ts_cancel_init (&cancel, NULL, NULL);
+  ts_cancel_request (&cancel);
   CHECK (ts_mrpm_level (&pyramid, 0, NULL, 3, &o, &cancel, &sets[0]) == TS_ERROR_CANCELLED
          && sets[0].index == NULL, "cancel");
+  /* A callback asked from inside the search, saying stop. */
+  int asked = 0;
+  ts_cancel_init (&cancel, say_stop, &asked);
+  cancel.last_ask = -1.0;  /* due at the first poll */
+  CHECK (ts_mrpm_level (&pyramid, 0, NULL, 3, &o, &cancel, &sets[0]) == TS_ERROR_CANCELLED
+         && sets[0].index == NULL && asked == 1, "cancel by the callback (asked %d times)", asked);
   ts_candidate_set_free (&sets[1]);
   ts_pyramid_free (&pyramid);
   ts_image_free (&work);
