@@ -50,8 +50,9 @@ void     ts_mrpm_options_init (TsMrpmOptions *options);
  * candidates. Candidates are centres whose patch lies inside the level;
  * pixels near the border get the candidates of their clamped centre.
  * `cancel` (may be NULL) is polled between rows (thread 0 asks its
- * callback); once it is raised the function returns TS_ERROR_CANCELLED. Threads: OpenMP over rows; the result does
- * not depend on the thread count. `options` may be NULL (defaults). */
+ * callback); once it is raised the function returns TS_ERROR_CANCELLED.
+ * Threads: OpenMP over rows; the result does not depend on the thread
+ * count. `options` may be NULL (defaults). */
 TsStatus ts_mrpm_level (const TsPyramid       *pyramid,
                         size_t                 level,
                         const TsCandidateSet  *coarser,

@@ -39,7 +39,8 @@ typedef struct
 /* Indexes every neighbourhood of side `patch` that lies inside level
  * `level` of `pyramid` with an opaque centre. A level too small for the
  * patch, or without opaque centres, leaves the index empty (patch 0).
- * `cancel` (may be NULL) is polled while projecting: TS_ERROR_CANCELLED. */
+ * `cancel` (may be NULL) is polled while projecting and while building
+ * the tree; once it is raised the result is TS_ERROR_CANCELLED. */
 TsStatus ts_solid_index_build (const TsPyramid *pyramid, size_t level, size_t patch,
                                TsCancel *cancel, TsSolidIndex *index);
 void     ts_solid_index_free (TsSolidIndex *index);
