@@ -70,8 +70,7 @@ typedef struct
   TsProgressFunc       progress;
   void                *user_data;
   double               done, total;
-  volatile int         cancel;
-  TsCancel             midway;  /* raised with `cancel`; lets the steps ask midway */
+  TsCancel             midway;  /* raised by a stop; lets the steps ask midway */
   const char          *stage;   /* what a midway report says */
   Exemplar             exemplar[TS_SOLID_AXES];
   int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
@@ -92,11 +91,8 @@ report (Run *run, double units, const char *stage)
   run->done += units;
   if (run->progress && !run->progress (run->total > 0 ? fmin (1.0, run->done / run->total) : 1.0,
                                        stage, run->user_data))
-    {
-      run->cancel = 1;
-      ts_cancel_request (&run->midway);
-    }
-  return !run->cancel;
+    ts_cancel_request (&run->midway);
+  return !ts_cancel_requested (&run->midway);
 }
 
 /* Asked by OpenMP thread 0 (the caller's thread) from inside the steps. */
