@@ -7,7 +7,9 @@
  * share of gradient energy within 10 degrees of the axes, over the
  * exemplar's) and the seam. An image path instead of a kind measures the
  * synthesis from its central SIZE x SIZE crop alone (no truth).
- * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] [cells|blobs|grains|IMAGE.png]...
+ * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] [-c] [cells|blobs|grains|IMAGE.png]...
+ * -c turns the cell structure guide on (TsSolidParams.cell_structure) for
+ * the solids named after it.
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
  * middle slice across x (blank without truth), and ours across x, y, z
  * and the diagonal. Each row ends with the sharpness averaged over every
@@ -186,14 +188,14 @@ main (int argc, char **argv)
 {
   const char *dir = NULL;
   int iterations = 0, patch = 0;
-  bool new_sample = false;
+  bool new_sample = false, cell_structure = false;
   size_t n = argc > 2 ? (size_t) atol (argv[1]) : 0;
   uint32_t seed = argc > 2 ? (uint32_t) strtoul (argv[2], NULL, 10) : 0;
   int status = 0;
 
   if (n < 16 || n > 512)
     {
-      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] "
+      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] [-c] "
                        "[cells|blobs|grains|IMAGE.png]...\n");
       return 2;
     }
@@ -218,6 +220,12 @@ main (int argc, char **argv)
       if (!strcmp (name, "-p") && i + 1 < argc)
         {
           patch = atoi (argv[++i]);
+          free (ours);
+          continue;
+        }
+      if (!strcmp (name, "-c"))
+        {
+          cell_structure = true;
           free (ours);
           continue;
         }
@@ -266,6 +274,7 @@ main (int argc, char **argv)
           params.max_iterations = iterations;
           params.patch_size = patch;
           params.record_sources = true;
+          params.cell_structure = cell_structure;
           start = now ();
           if (ts_synthesize_solid_with_sources (&params, ex3, ours, sources, NULL, NULL, &error)
               != TS_OK)

@@ -20,7 +20,7 @@ ts_solid_params_init (TsSolidParams *params)
 }
 
 static TsStatus
-check_exemplar (const TsImage *ex, int axis, TsError *error)
+check_exemplar (const TsImage *ex, int axis, bool cell_structure, TsError *error)
 {
   size_t n;
   bool opaque = false;
@@ -44,6 +44,12 @@ check_exemplar (const TsImage *ex, int axis, TsError *error)
     return ts_fail (error, TS_ERROR_TRANSPARENT_EXEMPLAR,
                     "the exemplar of the slices across %s is fully transparent: "
                     "there is nothing to copy from", axis_names[axis]);
+  /* The cell structure carries its distances in the working alpha. */
+  for (size_t i = 0; i < n && cell_structure; i++)
+    if (ex->pixels[i * TS_CHANNELS + 3] < 1.0f)
+      return ts_fail (error, TS_ERROR_BAD_PARAMETER,
+                      "the cell structure needs opaque exemplars; the exemplar of the slices "
+                      "across %s has transparent pixels", axis_names[axis]);
   return TS_OK;
 }
 
@@ -67,7 +73,7 @@ validate_without_memory (const TsSolidParams *params, const TsImage *const exemp
   for (int a = 0; a < 3; a++)
     if (exemplars[a])
       {
-        status = check_exemplar (exemplars[a], a, error);
+        status = check_exemplar (exemplars[a], a, params->cell_structure, error);
         if (status != TS_OK)
           return status;
         given++;
@@ -104,6 +110,8 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
   bytes += n3 / 8.0 * (16.0 + 12.0);
   if (params->record_sources)
     bytes += n3 * sizeof (TsSolidSource);
+  if (params->cell_structure)
+    bytes += n3 * sizeof (float);               /* the guide's distances */
   return bytes + 16.0 * 1024 * 1024;
 }
 

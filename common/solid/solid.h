@@ -40,6 +40,37 @@ void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
  * 5th and 95th lightness percentiles. */
 float ts_solid_phase_split (const TsImage *ex);
 
+/* The cell structure guide (cell-guide.c). Distances ride in the working
+ * alpha channel as TS_ALPHA_SCALE + weight x distance (pixels): 8 gave
+ * 128^3 cells closed mortar lines around polygons; the guide is off for
+ * exemplars that are not cells. */
+#define TS_SOLID_CELL_GUIDE_WEIGHT 8.0f
+
+typedef struct
+{
+  size_t    sections, area, dark; /* over the exemplars: stone sections,
+                                     pixels, and pixels of the dark phase */
+  size_t    edge;                 /* of the finest level                */
+  float    *seeds;                /* seed_count x 3, in finest voxels   */
+  size_t    seed_count, buckets;  /* buckets^3 cells of the seed grid   */
+  size_t   *bucket_start;         /* buckets^3 + 1 offsets into `order` */
+  uint32_t *order;                /* seeds sorted by bucket             */
+  float    *field;                /* field_edge^3 distances to a wall   */
+  size_t    field_edge;
+} TsSolidCellGuide;
+
+/* Writes the exemplar's signed distances to its mortar into `working`'s
+ * alpha and adds its sections and pixels to `guide`. */
+TsStatus ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide);
+/* Draws the Voronoi seeds for a volume of edge `edge`, once the
+ * exemplars are in. */
+TsStatus ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed);
+/* The distances of a level of edge n (polls `cancel`). */
+TsStatus ts_solid_cell_guide_level (TsSolidCellGuide *guide, size_t n, TsCancel *cancel);
+/* Writes the level's distances into the alpha of `value`. */
+void     ts_solid_cell_guide_apply (const TsSolidCellGuide *guide, float *value);
+void     ts_solid_cell_guide_free (TsSolidCellGuide *guide);
+
 /* One slice orientation at one level. */
 typedef struct
 {

@@ -83,6 +83,7 @@ typedef struct
   TsSolidSource       *sources;                    /* the caller's, or NULL */
   TsSolidSource       *own_sources; /* finest level's, when the caller's is NULL
                                        and the position histogram needs them */
+  TsSolidCellGuide     cells;       /* with params->cell_structure */
 } Run;
 
 static bool
@@ -180,6 +181,7 @@ run_free (Run *run)
   level_free (&run->level, run->volume);
   level_free (&run->coarser, run->volume);
   free (run->own_sources);
+  ts_solid_cell_guide_free (&run->cells);
   for (size_t e = 0; e < run->exemplars; e++)
     {
       Exemplar *ex = &run->exemplar[e];
@@ -228,12 +230,16 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
     {
       Exemplar *ex = &run->exemplar[e];
       TsStatus status = ts_image_to_working (ex->input, &ex->working);
+      if (status == TS_OK && run->params->cell_structure)
+        status = ts_solid_cell_guide_exemplar (&ex->working, &run->cells);
       if (status == TS_OK)
         status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
       if (status != TS_OK)
         return status;
     }
-  return TS_OK;
+  return run->params->cell_structure
+           ? ts_solid_cell_guide_seed (&run->cells, run->params->size, run->params->seed)
+           : TS_OK;
 }
 
 /* Candidate sets, opaque lists and histogram excesses of every exemplar at
@@ -368,6 +374,9 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
   TsSolidHistogramDelta delta;
   TsStatus status;
 
+  /* The E-step copied the exemplar's distances; the volume's are fixed. */
+  if (run->cells.field)
+    ts_solid_cell_guide_apply (&run->cells, l->value);
   memset (&it, 0, sizeof it);
   memset (delta, 0, sizeof delta);
   *changed = 0;
@@ -501,6 +510,10 @@ synthesize_level (Run *run, size_t level)
   else
     ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed);
   level_free (&run->coarser, run->volume);
+  if (run->params->cell_structure)
+    status = ts_solid_cell_guide_level (&run->cells, run->level.n, &run->midway);
+  if (status != TS_OK)
+    return status;
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;
   run->level.no_lone_voxels = level == 0;
   for (size_t e = 0; e < run->exemplars; e++)
@@ -552,7 +565,9 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
     {
       size_t voxels = cube (params->size);
       for (size_t p = 0; p < voxels; p++)
-        volume[p * TS_CHANNELS + 3] /= TS_ALPHA_SCALE;
+        volume[p * TS_CHANNELS + 3] = params->cell_structure
+                                        ? 1.0f /* opaque exemplars; alpha held distances */
+                                        : volume[p * TS_CHANNELS + 3] / TS_ALPHA_SCALE;
       report (&run, 0, "done");
     }
   run_free (&run);
