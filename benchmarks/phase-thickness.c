@@ -114,10 +114,12 @@ phase_thickness (const TsImage *exemplar, const float *volume, size_t n, double 
   return ok;
 }
 
-/* Specks of one wrapped slice's phase mask; `stack` holds w * h indices
- * and `seen` w * h flags. */
+/* Specks of one wrapped slice's phase mask, and in *sections its pieces
+ * of the light phase (mask 0) larger than a speck; `stack` holds w * h
+ * indices and `seen` w * h flags. */
 static size_t
-count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *stack)
+count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *stack,
+              size_t *sections)
 {
   size_t specks = 0;
 
@@ -143,34 +145,59 @@ count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *st
               }
         }
       specks += size <= PHASE_SPECK_PIXELS;
+      *sections += size > PHASE_SPECK_PIXELS && !mask[start];
     }
   return specks;
 }
 
-bool
-phase_specks (const TsImage *exemplar, const float *volume, size_t n, double *per_thousand)
+/* Specks and light sections of every x, y and z slice of `volume`, or
+ * with volume NULL of the exemplar (n x n) alone. */
+static bool
+count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *specks,
+              size_t *sections)
 {
   TsImage slice = { n, n, malloc (n * n * TS_CHANNELS * sizeof (float)) };
   uint8_t *mask = malloc (n * n), *seen = malloc (n * n);
-  size_t *stack = malloc (n * n * sizeof (size_t)), specks = 0;
+  size_t *stack = malloc (n * n * sizeof (size_t));
   float threshold;
   bool below, ok = slice.pixels && mask && seen && stack && split (exemplar, &threshold, &below);
 
-  if (ok)
-    {
-      for (int axis = 0; axis < 3; axis++)
-        for (size_t k = 0; k < n; k++)
-          {
-            slice_cut (volume, n, axis, k, &slice);
-            for (size_t i = 0; i < n * n; i++)
-              mask[i] = slice.pixels[i * TS_CHANNELS] < threshold;
-            specks += count_specks (mask, n, n, seen, stack);
-          }
-      *per_thousand = 1000.0 * (double) specks / (3.0 * (double) n * (double) n * (double) n);
-    }
+  *specks = *sections = 0;
+  for (int axis = 0; ok && axis < (volume ? 3 : 1); axis++)
+    for (size_t k = 0; k < (volume ? n : 1); k++)
+      {
+        const TsImage *cut = volume ? &slice : exemplar;
+        if (volume)
+          slice_cut (volume, n, axis, k, &slice);
+        for (size_t i = 0; i < n * n; i++)
+          mask[i] = cut->pixels[i * TS_CHANNELS] < threshold;
+        *specks += count_specks (mask, n, n, seen, stack, sections);
+      }
   free (slice.pixels);
   free (mask);
   free (seen);
   free (stack);
   return ok;
+}
+
+bool
+phase_specks (const TsImage *exemplar, const float *volume, size_t n, double *per_thousand)
+{
+  size_t specks, sections;
+  if (!count_phases (exemplar, volume, n, &specks, &sections))
+    return false;
+  *per_thousand = 1000.0 * (double) specks / (3.0 * (double) n * (double) n * (double) n);
+  return true;
+}
+
+bool
+phase_sections (const TsImage *exemplar, const float *volume, size_t n, double *ratio)
+{
+  size_t specks, ours, theirs;
+  if (exemplar->width != n || exemplar->height != n
+      || !count_phases (exemplar, volume, n, &specks, &ours)
+      || !count_phases (exemplar, NULL, n, &specks, &theirs))
+    return false;
+  *ratio = theirs ? (double) ours / (3.0 * (double) n * (double) theirs) : NAN;
+  return true;
 }

@@ -29,4 +29,12 @@ bool phase_thickness (const TsImage *exemplar, const float *volume, size_t n, do
  * of memory. */
 bool phase_specks (const TsImage *exemplar, const float *volume, size_t n, double *per_thousand);
 
+/* Sections: pieces of the light phase larger than a speck (stones between
+ * mortar, spots on a dark ground). Their number per slice over every x,
+ * y and z slice of `volume`, over the exemplar's own (n x n, wrapped):
+ * where stones merge or the mortar fails to close it falls below 1, where
+ * they break into fragments it rises. False if out of memory or if the
+ * exemplar is not n x n. */
+bool phase_sections (const TsImage *exemplar, const float *volume, size_t n, double *ratio);
+
 #endif

@@ -22,7 +22,9 @@
  * how much the steps across a lattice of voxel planes exceed the others
  * ("grid", plane-steps.h): axis-aligned blocks, and last the specks per
  * 1000 pixels over every x, y and z slice ("specks", phase-thickness.h):
- * ragged, speckled edges that sharpness counts as edge. -i
+ * ragged, speckled edges that sharpness counts as edge, and the light
+ * sections per slice over the exemplar's ("sections", phase-thickness.h):
+ * stones merged or fragmented. -i
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
@@ -91,6 +93,14 @@ speck_figure (const TsImage *exemplar, const float *volume, size_t n)
   return phase_specks (exemplar, volume, n, &per_thousand) ? per_thousand : NAN;
 }
 
+/* phase_sections' ratio, NAN if out of memory. */
+static double
+section_figure (const TsImage *exemplar, const float *volume, size_t n)
+{
+  double ratio;
+  return phase_sections (exemplar, volume, n, &ratio) ? ratio : NAN;
+}
+
 /* plane_step_lattice's ratio, NAN if out of memory. */
 static double
 lattice (const float *volume, size_t n)
@@ -101,16 +111,16 @@ lattice (const float *volume, size_t n)
 
 static void
 print_row (const char *name, const char *what, const SliceFigures *f, double thick,
-           PlaneRange planes, double grid, double specks)
+           PlaneRange planes, double grid, double specks, double sections)
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
-          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f grid %.3f specks %.2f\n",
+          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f grid %.3f specks %.2f sections %.2f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
           f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi,
-          f->worst_slice_anisotropy, grid, specks);
+          f->worst_slice_anisotropy, grid, specks, sections);
 }
 
 /* The truth solid `name` drawn with another seed, measured against the
@@ -127,7 +137,7 @@ print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t 
     {
       phase_thickness (exemplar, sample, n, &thick);
       print_row (name, "sample", &f, thick, interior_planes (exemplar, sample, n), lattice (sample, n),
-                 speck_figure (exemplar, sample, n));
+                 speck_figure (exemplar, sample, n), section_figure (exemplar, sample, n));
     }
   else
     fprintf (stderr, "solid-shapes: %s: could not render or measure a new sample\n", name);
@@ -305,7 +315,8 @@ main (int argc, char **argv)
                   thick = NAN;
                   phase_thickness (&exemplar, truth, n, &thick);
                   print_row (base, "truth", &f, thick, interior_planes (&exemplar, truth, n),
-                             lattice (truth, n), speck_figure (&exemplar, truth, n));
+                             lattice (truth, n), speck_figure (&exemplar, truth, n),
+                             section_figure (&exemplar, truth, n));
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
@@ -314,7 +325,8 @@ main (int argc, char **argv)
                   thick = NAN;
                   phase_thickness (&exemplar, ours, n, &thick);
                   print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n),
-                             lattice (ours, n), speck_figure (&exemplar, ours, n));
+                             lattice (ours, n), speck_figure (&exemplar, ours, n),
+                             section_figure (&exemplar, ours, n));
                 }
               if (truth && new_sample && !print_new_sample (base, &exemplar, n, seed))
                 status = 1;
