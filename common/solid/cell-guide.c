@@ -281,7 +281,20 @@ ts_solid_cell_guide_level (TsSolidCellGuide *g, size_t n, TsCancel *cancel)
   for (size_t i = 0; i < voxels; i++)
     g->field[i] = fmaxf (g->field[i] - wall, GUIDE_MIN_DISTANCE);
   g->field_edge = n;
+  g->weight = n == g->edge ? TS_SOLID_CELL_GUIDE_FINEST_WEIGHT : TS_SOLID_CELL_GUIDE_WEIGHT;
   return TS_OK;
+}
+
+void
+ts_solid_cell_guide_finest (TsImage *finest)
+{
+  size_t count = ts_image_pixel_count (finest);
+  float scale = TS_SOLID_CELL_GUIDE_FINEST_WEIGHT / TS_SOLID_CELL_GUIDE_WEIGHT;
+  for (size_t i = 0; i < count; i++)
+    {
+      float *alpha = &finest->pixels[i * TS_CHANNELS + 3];
+      *alpha = TS_ALPHA_SCALE + scale * (*alpha - TS_ALPHA_SCALE);
+    }
 }
 
 void
@@ -289,7 +302,7 @@ ts_solid_cell_guide_apply (const TsSolidCellGuide *g, float *value)
 {
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
   for (size_t i = 0; i < voxels; i++)
-    value[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + TS_SOLID_CELL_GUIDE_WEIGHT * g->field[i];
+    value[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + g->weight * g->field[i];
 }
 
 void

@@ -236,6 +236,8 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
         status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
       if (status != TS_OK)
         return status;
+      if (run->params->cell_structure)
+        ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
     }
   return run->params->cell_structure
            ? ts_solid_cell_guide_seed (&run->cells, run->params->size, run->params->seed)
