@@ -96,6 +96,9 @@ compute_key (const TsSolidParams *params, const TsImage *const exemplars[3],
   hash_u64 (sum, (guint64) (gint64) params->patch_size);
   hash_u64 (sum, (guint64) (gint64) params->max_iterations);
   hash_u64 (sum, params->histogram_matching);
+  /* Only when set: volumes cached before the option keep their keys. */
+  if (params->cell_structure)
+    hash_u64 (sum, params->cell_structure);
   for (int a = 0; a < 3; a++)
     {
       const TsImage *ex = exemplars[a];

@@ -44,6 +44,13 @@ property_boolean (histogram_matching, _("Histogram matching"),
                  "exemplars', so rare colours are neither lost nor overused"))
   ui_meta     ("role", "advanced")
 
+property_boolean (cell_structure, _("Cell structure"), ts_volume_op_default_params ().cell_structure)
+  description (_("For exemplars of cells, such as stones in mortar, cobbles "
+                 "or cracked mud: a 3D tessellation fitted to the exemplar "
+                 "decides where the walls between cells go, so every slice "
+                 "shows whole cells with closed joints. Needs an opaque "
+                 "exemplar"))
+
 property_int (memory_limit, _("Memory limit (MiB)"), 0)
   description (_("Refuse, with a message saying how much it would need, a "
                  "synthesis that needs more memory than this; 0 means a "

@@ -56,6 +56,16 @@ check(px1b == px1 and len(px1) == 16 * 16 * 4, "seed 1 twice: identical slices")
 check(px2 != px1 and len(px2) == len(px1), "seed 2: another slice (%d of %d bytes differ)"
       % (sum(a != b for a, b in zip(px1, px2)), len(px1)))
 
+note("-- the cell structure: another volume, opaque and reproducible")
+sc, scb = os.path.join(tmp, "sc.png"), os.path.join(tmp, "scb.png")
+code, warnings, _ = slice_cli(sc, cell_structure="true", **base)
+slice_cli(scb, cell_structure="true", **base)
+w, h, pxc = pixels(sc) if code == 0 and os.path.isfile(sc) else (0, 0, b"")
+check(code == 0 and not warnings and (w, h) == (16, 16) and min(pxc[3::4], default=0) == 255,
+      "cell-structure=true: exit %d, %dx%d, %s, opaque" % (code, w, h, warnings or "no warning"))
+check(pxc != px1 and pxc == pixels(scb)[2], "cell-structure=true: another slice than without, "
+      "the same twice")
+
 note("-- an XML graph gives the same slice as the command line")
 xml = os.path.join(tmp, "slice.xml")
 with open(xml, "w") as f:
@@ -96,6 +106,8 @@ bad_case("index 1000", "slice 1000 does not exist", (16, 16), size=16, index=100
 bad_case("transparent exemplar", "fully transparent", (16, 16), "",
          ["gegl:color", "value=transparent"] + crop(32, 32), size=16)
 bad_case("2x2 exemplar", "2x2", (16, 16), None, crop(2, 2), size=16)
+bad_case("translucent exemplar with the cell structure", "needs opaque exemplars", (16, 16),
+         None, ["gegl:opacity", "value=0.5"], size=16, cell_structure="true")
 bad_case("memory limit 1 MiB", "limit of 1.0 MiB", (32, 32), size=32, memory_limit=1)
 # GObject refuses an out-of-range size with its own message and keeps the
 # default (128); the memory limit then refuses that without synthesising.
