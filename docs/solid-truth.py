@@ -3,7 +3,8 @@
 # blobs, grains) of
 # build/benchmarks/solid-truth (128^3, seed 1), its z = 0 slice (the
 # exemplar), its middle slice across x, and the middle slice across x of
-# the volume texsynth:volume-slice synthesises from that exemplar. Run from
+# the volume texsynth:volume-slice synthesises from that exemplar; for the
+# cells, a second volume with cell-structure=true beside it. Run from
 # the source root after building:  docs/solid-truth.py [BUILD_DIR]
 # Needs the system python3 (PyGObject + Gegl typelib).
 # SPDX-License-Identifier: LGPL-3.0-or-later
@@ -36,5 +37,10 @@ with tempfile.TemporaryDirectory() as scratch:
         synthesised = node("texsynth:volume-slice", size=SIZE, seed=SEED, axis="x", index=SIZE // 2)
         exemplar.connect_to("output", synthesised, "input")
         panels += [exemplar, truth_slice, synthesised]
+        if kind == "cells":
+            guided = node("texsynth:volume-slice", size=SIZE, seed=SEED, axis="x", index=SIZE // 2,
+                          cell_structure=True)
+            exemplar.connect_to("output", guided, "input")
+            panels.append(guided)
     save_row(panels, [SCALE] * len(panels), os.path.join(ROOT, "docs", "solid-truth.png"), gap=6)
 print("wrote docs/solid-truth.png")
