@@ -31,7 +31,8 @@
 #define GUIDE_BINS 4096
 
 /* Signed distance from pixel i to the nearest pixel of the other phase
- * (positive in the light phase), clipped to GUIDE_MAX_DISTANCE. */
+ * (positive in the light phase), clipped to GUIDE_MAX_DISTANCE. Rings of
+ * growing radius, so a pixel near a joint stops early. */
 static float
 signed_distance (const TsImage *ex, const uint8_t *light, size_t i)
 {
@@ -39,14 +40,19 @@ signed_distance (const TsImage *ex, const uint8_t *light, size_t i)
   ptrdiff_t x = (ptrdiff_t) (i % ex->width), y = (ptrdiff_t) (i / ex->width);
   ptrdiff_t best = r * r;
 
-  for (ptrdiff_t dy = -r; dy <= r; dy++)
-    for (ptrdiff_t dx = -r; dx <= r; dx++)
+  for (ptrdiff_t ring = 1; ring <= r && ring * ring < best; ring++)
+    for (ptrdiff_t dy = -ring; dy <= ring; dy++)
       {
-        ptrdiff_t d = dx * dx + dy * dy;
-        if (d >= best || x + dx < 0 || x + dx >= w || y + dy < 0 || y + dy >= h)
-          continue;
-        if (light[(y + dy) * w + x + dx] != light[i])
-          best = d;
+        /* Inner rows of the ring hold only its two end pixels. */
+        ptrdiff_t step = dy == -ring || dy == ring ? 1 : 2 * ring;
+        for (ptrdiff_t dx = -ring; dx <= ring; dx += step)
+          {
+            ptrdiff_t d = dx * dx + dy * dy;
+            if (d >= best || x + dx < 0 || x + dx >= w || y + dy < 0 || y + dy >= h)
+              continue;
+            if (light[(y + dy) * w + x + dx] != light[i])
+              best = d;
+          }
       }
   return fmaxf ((light[i] ? 1.0f : -1.0f) * (sqrtf ((float) best) - 0.5f), GUIDE_MIN_DISTANCE);
 }
@@ -95,7 +101,7 @@ count_sections (const TsImage *ex, const uint8_t *light, size_t *sections)
 }
 
 TsStatus
-ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide)
+ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, TsCancel *cancel)
 {
   size_t count = ts_image_pixel_count (working), sections, dark = 0;
   float split = ts_solid_phase_split (working);
@@ -114,7 +120,13 @@ ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide)
     {
 #pragma omp parallel for schedule(dynamic, 256)
       for (size_t i = 0; i < count; i++)
-        distance[i] = signed_distance (working, light, i);
+        if (!ts_cancel_poll (cancel))
+          distance[i] = signed_distance (working, light, i);
+      if (ts_cancel_requested (cancel))
+        status = TS_ERROR_CANCELLED;
+    }
+  if (status == TS_OK)
+    {
       /* Only after all distances: the phases are read from `light`. */
       for (size_t i = 0; i < count; i++)
         working->pixels[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + TS_SOLID_CELL_GUIDE_WEIGHT * distance[i];

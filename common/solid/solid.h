@@ -67,7 +67,8 @@ typedef struct
 /* Writes the exemplar's signed distances to its mortar into `working`'s
  * alpha (TS_SOLID_CELL_GUIDE_WEIGHT) and adds its sections and pixels to
  * `guide`. */
-TsStatus ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide);
+TsStatus ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide,
+                                       TsCancel *cancel);
 /* Turns the finest exemplar level's alpha to the finest weight. */
 void     ts_solid_cell_guide_finest (TsImage *finest);
 /* Draws the Voronoi seeds for a volume of edge `edge`, once the

@@ -231,7 +231,7 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
       Exemplar *ex = &run->exemplar[e];
       TsStatus status = ts_image_to_working (ex->input, &ex->working);
       if (status == TS_OK && run->params->cell_structure)
-        status = ts_solid_cell_guide_exemplar (&ex->working, &run->cells);
+        status = ts_solid_cell_guide_exemplar (&ex->working, &run->cells, &run->midway);
       if (status == TS_OK)
         status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
       if (status != TS_OK)

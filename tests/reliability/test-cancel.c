@@ -1,6 +1,7 @@
 /* Cancel: another thread asks the progress callback to stop at several
  * points of a 2D synthesis (default 1024x1024) and of a solid one
- * (default 128^3), and inside the exemplar matching of both from a large
+ * (default 128^3; also with the cell structure, early), and inside the
+ * exemplar matching of both from a large
  * exemplar (default 512x512, whose matching alone takes about a second);
  * the engine must return TS_ERROR_CANCELLED within a bound, leave a 2D
  * output untouched (a volume is synthesised in place: its contents are
@@ -259,11 +260,14 @@ main (int argc, char **argv)
 {
   static const int spread[] = { 1, 300, 600, 800 };
   static const int matching[] = { MATCHING_TARGET };
+  /* The cell structure's own stretches (the exemplar's distances, each
+   * level's tessellation) come first: the early points reach them. */
+  static const int early[] = { 1, 300 };
   size_t side = argc > 1 ? (size_t) strtoul (argv[1], NULL, 10) : DEFAULT_SIDE;
   size_t solid = argc > 2 ? (size_t) strtoul (argv[2], NULL, 10) : DEFAULT_SOLID_SIZE;
   size_t large = argc > 3 ? (size_t) strtoul (argv[3], NULL, 10) : DEFAULT_LARGE_EXEMPLAR;
   double bound = argc > 4 ? strtod (argv[4], NULL) : DEFAULT_BOUND_S;
-  char name[4][48];
+  char name[5][48];
   TsImage ex, big;
   Job job;
 
@@ -283,6 +287,11 @@ main (int argc, char **argv)
   snprintf (name[1], sizeof name[1], "solid %zu^3", solid);
   job_solid (&job, name[1], &ex, solid);
   run_cancels (&job, spread, sizeof spread / sizeof spread[0], bound);
+
+  snprintf (name[4], sizeof name[4], "solid %zu^3, cell structure", solid);
+  job_solid (&job, name[4], &ex, solid);
+  job.solid.cell_structure = true;
+  run_cancels (&job, early, sizeof early / sizeof early[0], bound);
 
   CHECK (mirror_tile (&ex, large, &big), "large exemplar allocation");
   if (big.pixels)
