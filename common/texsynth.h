@@ -242,10 +242,11 @@ typedef struct
   bool     record_sources;     /* counts the source volume (4 bytes per
                                   voxel) in the estimate; required by
                                   ts_synthesize_solid_with_sources       */
-  bool     cell_structure;     /* for cells (stones in mortar, cobbles,
-                                  cracked mud): a 3D cell tessellation
-                                  fitted to the exemplar guides where the
-                                  walls go; needs opaque exemplars       */
+  bool     cell_structure;     /* for cells with dark joints (stones in
+                                  mortar, cobbles, paving): a 3D cell
+                                  tessellation fitted to the exemplar
+                                  guides where the walls go; needs opaque
+                                  exemplars; wrong for other kinds       */
 } TsSolidParams;
 
 /* Defaults: 128^3, periodic, default quality, histogram matching. */

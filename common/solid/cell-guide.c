@@ -1,12 +1,13 @@
-/* The cell structure guide: for exemplars of cells (stones in mortar,
- * cobbles, cracked mud), a random 3D Voronoi tessellation fitted to the
- * exemplar by stereology (Jagnow et al. 2004) says where the volume's
- * cell walls go. Each exemplar pixel carries its signed distance to the
- * mortar and each voxel its distance to the nearest Voronoi wall; both
- * ride in the working alpha channel, so the search matches them along
- * with the colours. Why: slice neighbourhoods alone never agree across
- * the three orientations on where a stone ends, and the stones came back
- * as fragments with mortar in clumps (README, "Solid textures").
+/* The cell structure guide: for exemplars of cells with dark joints
+ * (stones in mortar, cobbles, paving), a random 3D Voronoi tessellation
+ * fitted to the exemplar by stereology (Jagnow et al. 2004) says where
+ * the volume's cell walls go. Each exemplar pixel carries its signed
+ * distance to the mortar and each voxel its distance to the nearest
+ * Voronoi wall; both ride in the working alpha channel, so the search
+ * matches them along with the colours. Why: slice neighbourhoods alone
+ * never agree across the three orientations on where a stone ends, and
+ * the stones came back as fragments with mortar in clumps (README,
+ * "Solid textures").
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/rng.h"
@@ -139,12 +140,21 @@ ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, TsCance
   return status;
 }
 
-/* Seed s's bucket along one axis. */
+/* A coordinate's bucket along one axis. */
 static size_t
 bucket_of (float coordinate, size_t buckets, size_t edge)
 {
   size_t b = (size_t) (coordinate * (float) buckets / (float) edge);
   return b < buckets ? b : buckets - 1;
+}
+
+/* The bucket of a point, x fastest. */
+static size_t
+bucket_index (const TsSolidCellGuide *g, const float *p)
+{
+  return (bucket_of (p[2], g->buckets, g->edge) * g->buckets + bucket_of (p[1], g->buckets, g->edge))
+           * g->buckets
+         + bucket_of (p[0], g->buckets, g->edge);
 }
 
 TsStatus
@@ -166,15 +176,9 @@ ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t s = 0; s < guide->seed_count * 3; s++)
     guide->seeds[s] = (float) ((double) (ts_random (seed, 0, 0, s, 11) >> 11) * 0x1p-53 * (double) edge);
-  /* Counting sort of the seeds by bucket, x fastest. */
+  /* Counting sort of the seeds by bucket. */
   for (size_t s = 0; s < guide->seed_count; s++)
-    {
-      const float *p = guide->seeds + 3 * s;
-      size_t b = (bucket_of (p[2], guide->buckets, edge) * guide->buckets
-                  + bucket_of (p[1], guide->buckets, edge)) * guide->buckets
-                 + bucket_of (p[0], guide->buckets, edge);
-      guide->bucket_start[b + 1]++;
-    }
+    guide->bucket_start[bucket_index (guide, guide->seeds + 3 * s) + 1]++;
   for (size_t b = 0; b < b3; b++)
     guide->bucket_start[b + 1] += guide->bucket_start[b];
   {
@@ -183,13 +187,7 @@ ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed)
       return TS_ERROR_OUT_OF_MEMORY;
     memcpy (fill, guide->bucket_start, b3 * sizeof (size_t));
     for (size_t s = 0; s < guide->seed_count; s++)
-      {
-        const float *p = guide->seeds + 3 * s;
-        size_t b = (bucket_of (p[2], guide->buckets, edge) * guide->buckets
-                    + bucket_of (p[1], guide->buckets, edge)) * guide->buckets
-                   + bucket_of (p[0], guide->buckets, edge);
-        guide->order[fill[b]++] = (uint32_t) s;
-      }
+      guide->order[fill[bucket_index (guide, guide->seeds + 3 * s)]++] = (uint32_t) s;
     free (fill);
   }
   return TS_OK;
