@@ -18,7 +18,10 @@
 # that sample misses are the measures' own spread on that seed, and
 # the summary counts our misses that it shares.
 #
-# Usage: benchmarks/solid-seeds.py [-b BUILD] [-s SIZE] [-n] [SEED ...] [-k cells,blobs,grains]
+# With -c the volumes are synthesised with the cell structure
+# (solid-shapes -c).
+#
+# Usage: benchmarks/solid-seeds.py [-b BUILD] [-s SIZE] [-n] [-c] [SEED ...] [-k cells,blobs,grains]
 # e.g. OMP_NUM_THREADS=2 benchmarks/solid-seeds.py -s 64 1 2 3 4 5 6  (about a minute)
 #      OMP_NUM_THREADS=2 benchmarks/solid-seeds.py -s 128 1 2 3       (about 5 minutes)
 
@@ -31,7 +34,7 @@ import sys
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours|sample)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
                     r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+) "
                     r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan) streaks ([\d.]+) "
-                    r"grid ([\d.]+|nan) specks ([\d.]+|nan)$")
+                    r"grid ([\d.]+|nan) specks ([\d.]+|nan) sections ([\d.]+|nan)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -63,8 +66,9 @@ def ratio(ours, truth):
     return ours / truth if truth > 0 else float("nan")
 
 
-def run_seed(shapes, size, seed, kinds, new_sample):
-    out = subprocess.run([shapes, str(size), str(seed)] + (["-n"] if new_sample else []) + kinds,
+def run_seed(shapes, size, seed, kinds, new_sample, cell_structure):
+    out = subprocess.run([shapes, str(size), str(seed)] + (["-n"] if new_sample else [])
+                         + (["-c"] if cell_structure else []) + kinds,
                          capture_output=True, text=True)
     if out.returncode != 0:
         sys.exit(f"solid-shapes {size} {seed} failed ({out.returncode}): {out.stderr.strip()}")
@@ -74,8 +78,8 @@ def run_seed(shapes, size, seed, kinds, new_sample):
         if m:
             figures[(m.group(1), m.group(2))] = dict(zip(
                 ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all", "thick",
-                 "planes_lo", "planes_hi", "streaks", "grid", "specks"),
-                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14))))
+                 "planes_lo", "planes_hi", "streaks", "grid", "specks", "sections"),
+                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -95,6 +99,8 @@ def main():
     parser.add_argument("-k", "--kinds", default="cells,blobs,grains")
     parser.add_argument("-n", "--new-sample", action="store_true",
                         help="also score an independent sample of each truth solid")
+    parser.add_argument("-c", "--cell-structure", action="store_true",
+                        help="synthesise with the cell structure (solid-shapes -c)")
     args = parser.parse_args()
     shapes = os.path.join(args.build, "benchmarks", "solid-shapes")
     if not os.access(shapes, os.X_OK):
@@ -115,7 +121,8 @@ def main():
     print(f"{args.size}^3, seeds {' '.join(map(str, args.seeds))}: ours / truth for sharpness, "
           "coherence, completeness; ours for axis-edges and seam; marks: the aims missed")
     for seed in args.seeds:
-        figures, seconds = run_seed(shapes, args.size, seed, kinds, args.new_sample)
+        figures, seconds = run_seed(shapes, args.size, seed, kinds, args.new_sample,
+                                    args.cell_structure)
         cells = []
         for kind in kinds:
             o, t = figures[(kind, "ours")], figures[(kind, "truth")]
@@ -144,7 +151,8 @@ def main():
                          f"[all {sharp_all[kind][-1]:.2f} thick {thick[kind][-1]:.2f} "
                          f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f} "
                          f"streaks {streaks[kind][-1]:.2f} "
-                         f"grid {o['grid']:.2f}/{t['grid']:.2f} specks {specks[kind][-1]:.2f}] {sample}"
+                         f"grid {o['grid']:.2f}/{t['grid']:.2f} specks {specks[kind][-1]:.2f} "
+                         f"sections {o['sections']:.2f}/{t['sections']:.2f}] {sample}"
                          f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
     print("columns: sharpness coherence completeness axis-edges seam; "
@@ -153,7 +161,8 @@ def main():
           "interior lines of the same slices (seam-planes.h); streaks: ours / truth largest "
           "edge anisotropy of any x, y or z slice (slice-figures.h); grid: ours/truth step "
           "across a lattice of planes over the others (plane-steps.h); specks: ours / truth "
-          "specks per 1000 pixels of every x, y and z slice (phase-thickness.h); none is an aim]")
+          "specks per 1000 pixels of every x, y and z slice (phase-thickness.h); sections: ours/truth "
+          "light sections per slice over the exemplar's (phase-thickness.h); none is an aim]")
     for kind in kinds:
         means, worst = mean_and_worst(values, kind, len(args.seeds))
         all_mean = sum(sharp_all[kind]) / len(args.seeds)
