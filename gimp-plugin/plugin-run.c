@@ -227,22 +227,35 @@ result_buffer (gint width, gint height)
   return gegl_buffer_new (&rect, babl_format ("CIE Lab alpha float"));
 }
 
-static gboolean
-fully_transparent (GeglBuffer *buffer)
+/* The lowest and highest alpha of the buffer's pixels (1 without alpha). */
+static void
+alpha_range (GeglBuffer *buffer, gfloat *lowest, gfloat *highest)
 {
   const GeglRectangle *rect = gegl_buffer_get_extent (buffer);
   GeglBufferIterator *it = gegl_buffer_iterator_new (buffer, rect, 0, babl_format ("RGBA float"),
                                                      GEGL_ACCESS_READ, GEGL_ABYSS_NONE, 1);
-  gboolean transparent = TRUE;
 
+  *lowest = 1.0f;
+  *highest = 0.0f;
   while (gegl_buffer_iterator_next (it))
     {
       const gfloat *pixel = it->items[0].data;
 
-      for (gint i = 0; transparent && i < it->length; i++)
-        transparent = pixel[4 * i + 3] <= 0.0f;
+      for (gint i = 0; i < it->length; i++)
+        {
+          *lowest = MIN (*lowest, pixel[4 * i + 3]);
+          *highest = MAX (*highest, pixel[4 * i + 3]);
+        }
     }
-  return transparent;
+}
+
+static gboolean
+fully_transparent (GeglBuffer *buffer)
+{
+  gfloat lowest, highest;
+
+  alpha_range (buffer, &lowest, &highest);
+  return highest <= 0.0f;
 }
 
 gboolean
@@ -516,9 +529,28 @@ ts_plugin_solid (const TsExemplar  *exemplars,
   GStatBuf before, after;
   gboolean existed = g_stat (args->path, &before) == 0;
 
+  /* The engine refuses these too, but only on the console (a sink cannot
+   * return an error); the user should learn why and what to do. */
+  for (gint i = 0; args->cell_structure && i < n_exemplars; i++)
+    {
+      gfloat lowest, highest;
+
+      alpha_range (exemplars[i].buffer, &lowest, &highest);
+      if (lowest < 1.0f)
+        {
+          g_object_unref (graph);
+          g_set_error (error, TS_PLUGIN_ERROR, 0,
+                       _("The cell structure needs an opaque exemplar, but the layer (or its "
+                         "selected part) has transparent pixels: remove its alpha channel, "
+                         "select a rectangle, or turn the cell structure off."));
+          return FALSE;
+        }
+    }
+
   save = gegl_node_new_child (graph, "operation", TS_OP_VOLUME_SAVE, "path", args->path,
                               "size", args->size, "quality", args->quality,
-                              "seed", args->seed, NULL);
+                              "seed", args->seed, "cell-structure", args->cell_structure,
+                              NULL);
   link_exemplars (graph, save, exemplars, n_exemplars);
   watched[0] = save;
   run_with_progress (save, watched, 0.0, 0.9);
@@ -536,13 +568,14 @@ ts_plugin_solid (const TsExemplar  *exemplars,
     }
 
   /* The same parameters give the same volume, which the slice op keeps
-   * in its cache between the three slices. */
+   * in its cache between the three slices (the cell structure too, or
+   * the slices would come from another volume than the file's). */
   for (gint axis = 0; axis < 3; axis++)
     {
       GeglNode *slice = gegl_node_new_child (graph, "operation", TS_OP_VOLUME_SLICE,
                                              "size", args->size, "index", args->size / 2,
                                              "quality", args->quality, "seed", args->seed,
-                                             NULL);
+                                             "cell-structure", args->cell_structure, NULL);
       GeglNode *sink;
 
       set_enum_by_nick (slice, "axis", axes[axis]);

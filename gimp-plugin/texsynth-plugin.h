@@ -58,12 +58,15 @@ typedef struct
   gint seed;
 } TsTileableArgs;
 
+/* New fields go at the end: GIMP 2.10 keeps the last values of an older
+ * plug-in as bytes of the older struct (see compat-gimp2.c). */
 typedef struct
 {
-  gint  size;
-  gchar path[TS_PLUGIN_PATH_MAX];
-  gint  quality;
-  gint  seed;
+  gint     size;
+  gchar    path[TS_PLUGIN_PATH_MAX];
+  gint     quality;
+  gint     seed;
+  gboolean cell_structure;  /* texsynth:volume-save's cell-structure */
 } TsSolidArgs;
 
 /* The three heal procedures: context and sample-from for healing a
