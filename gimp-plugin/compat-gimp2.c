@@ -3,6 +3,7 @@
  * plugin-args.c and plugin-run.c, shared with GIMP 3.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include <stddef.h>
 #include <string.h>
 
 #include <glib/gi18n-lib.h>
@@ -65,6 +66,10 @@ query (void)
     { GIMP_PDB_STRING,   "path",     "Volume file to write: .vol, .dds or .png" },
     { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
     { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+    /* Last: every argument before it keeps its place. */
+    { GIMP_PDB_INT32,    "cell-structure",
+      "Fit a 3D cell tessellation, for light cells in dark joints only (TRUE or FALSE, "
+      "default FALSE; needs an opaque layer)" },
   };
   static const GimpParamDef heal_args[] =
   {
@@ -422,6 +427,18 @@ run_tileable (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome 
   return TRUE;
 }
 
+/* GIMP 2.10 copies the stored bytes over `args` whatever their number:
+ * only this struct's size, or the older one without cell_structure
+ * (which then keeps its default), may be read. */
+static void
+load_last_solid_args (TsSolidArgs *args)
+{
+  gint stored = gimp_get_data_size (TS_PROC_SOLID);
+
+  if (stored == (gint) sizeof *args || stored == (gint) offsetof (TsSolidArgs, cell_structure))
+    gimp_get_data (TS_PROC_SOLID, args);
+}
+
 static gboolean
 run_solid (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *outcome)
 {
@@ -436,17 +453,18 @@ run_solid (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *ou
   ts_solid_args_init (&args);
   if (mode == GIMP_RUN_NONINTERACTIVE)
     {
-      if (n_params != 7)
+      if (n_params != 8)
         return fail (outcome, GIMP_PDB_CALLING_ERROR,
-                     g_strdup_printf (_("%s takes 7 arguments (got %d)."), TS_PROC_SOLID, n_params));
+                     g_strdup_printf (_("%s takes 8 arguments (got %d)."), TS_PROC_SOLID, n_params));
       args.size = params[3].data.d_int32;
       g_strlcpy (args.path, params[4].data.d_string ? params[4].data.d_string : "",
                  sizeof args.path);
       args.quality = params[5].data.d_int32;
       args.seed = params[6].data.d_int32;
+      args.cell_structure = params[7].data.d_int32 != 0;
     }
   else
-    gimp_get_data (TS_PROC_SOLID, &args);
+    load_last_solid_args (&args);
 
   if (mode == GIMP_RUN_INTERACTIVE)
     {

@@ -325,12 +325,13 @@ run_solid (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_U
   if (mode == GIMP_RUN_INTERACTIVE)
     {
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      if (!ts_dialog3 (procedure, config, _("Solid Texture"), "size", "path", "quality", "seed", NULL))
+      if (!ts_dialog3 (procedure, config, _("Solid Texture"), "size", "path", "cell-structure",
+                       "quality", "seed", NULL))
         return failure (procedure, GIMP_PDB_CANCEL, NULL);
     }
   ts_solid_args_init (&args);
   g_object_get (config, "size", &args.size, "path", &path, "quality", &args.quality,
-                "seed", &args.seed, NULL);
+                "seed", &args.seed, "cell-structure", &args.cell_structure, NULL);
   g_strlcpy (args.path, path ? path : "", sizeof args.path);
   if (path && strlen (path) >= sizeof args.path)
     args.path[0] = '\0';
@@ -476,6 +477,11 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
       gimp_procedure_add_string_argument (procedure, "path", ts_arg_label ("path"),
                                           ts_arg_tooltip ("path"), path, G_PARAM_READWRITE);
       add_quality_and_seed (procedure);
+      /* After seed, as in GIMP 2.10: positional calls keep their meaning. */
+      gimp_procedure_add_boolean_argument (procedure, "cell-structure",
+                                           ts_arg_label ("cell-structure"),
+                                           ts_arg_tooltip ("cell-structure"), FALSE,
+                                           G_PARAM_READWRITE);
       gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
                                              _("An image of the volume's three middle slices"),
                                              FALSE, G_PARAM_READWRITE);

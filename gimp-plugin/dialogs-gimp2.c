@@ -248,6 +248,7 @@ ts_solid_dialog2 (TsSolidArgs *args)
   form_int (&form, "size", &args->size, TS_PLUGIN_MIN_SOLID, TS_PLUGIN_MAX_SOLID,
             TS_PLUGIN_MAX_SOLID);
   form_path (&form, args->path, sizeof args->path, &entry);
+  form_toggle (&form, "cell-structure", &args->cell_structure);
   form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
             TS_PLUGIN_MAX_QUALITY);
   form_seed (&form, &seed, &randomize);

@@ -188,6 +188,12 @@ static const struct
   { "path", N_("File"),
     N_("Where to write the volume; the name's ending chooses the format: .vol "
        "(raw floats), .dds (volume texture) or .png (slices)") },
+  { "cell-structure", N_("Cell structure"),
+    N_("For layers of light cells in dark joints, such as stones in mortar, cobbles "
+       "or paving: a 3D tessellation fitted to the layer decides where the walls "
+       "between cells go, so every slice shows whole cells with closed joints. Wrong "
+       "for other textures (a relief of cracks turns into spots). Needs an opaque "
+       "layer") },
 };
 
 static gsize
