@@ -50,6 +50,9 @@ class ScriptFu2:
     def active_layer(self, image):
         return "(car (gimp-image-get-active-layer %s))" % image
 
+    def top_layer(self, image):
+        return "(aref (cadr (gimp-image-get-layers %s)) 0)" % image
+
     def save(self, image, layer, path):
         return "(gimp-file-save RUN-NONINTERACTIVE %s %s %s %s)" % (
             image, layer, quote(path), quote(path))
@@ -98,10 +101,30 @@ class ScriptFu2:
                              "(if (equal? m0 %s) 1 0)" % middle) + ")"
         return "(let* (%s) %s)" % (self.load(path), body)
 
-    def solid_report(self, tag, path, size, volume, quality, seed):
-        body = ("(let* ((out (car (plug-in-texsynth-solid RUN-NONINTERACTIVE img %s %d %s %d %d)))) %s)"
-                % (self.drawables(), size, quote(volume), quality, seed,
-                   self.message(tag, self.width("out"), self.height("out"), self.n_layers("out"))))
+    def solid_call(self, size, volume, quality, seed, cell_structure):
+        return "(plug-in-texsynth-solid RUN-NONINTERACTIVE img %s %d %s %d %d %s)" % (
+            self.drawables(), size, quote(volume), quality, seed, cell_structure)
+
+    def solid_report(self, tag, path, size, volume, quality, seed, cell_structure="FALSE",
+                     save=None):
+        """save: where to export the top layer, the slice across x."""
+        body = "(let* ((out (car %s)) (layer %s)) " % (
+            self.solid_call(size, volume, quality, seed, cell_structure), self.top_layer("out"))
+        if save:
+            body += self.save("out", "layer", save) + " "
+        body += self.message(tag, self.width("out"), self.height("out"), self.n_layers("out")) + ")"
+        return "(let* (%s) %s)" % (self.load(path), body)
+
+    def solid_last_values_report(self, tag, path, last_values, save):
+        """GIMP 2.10 only: stores `last_values` (bytes) as the solid's last
+        values, runs it with RUN-WITH-LAST-VALS and exports the top layer."""
+        store = '(gimp-procedural-db-set-data "plug-in-texsynth-solid" %d (vector %s))' % (
+            len(last_values), " ".join(str(b) for b in last_values))
+        call = ("(plug-in-texsynth-solid RUN-WITH-LAST-VALS img %s 0 %s 0 0 FALSE)"
+                % (self.drawables(), quote("")))
+        body = "%s (let* ((out (car %s)) (layer %s)) %s %s)" % (
+            store, call, self.top_layer("out"), self.save("out", "layer", save),
+            self.message(tag, self.width("out"), self.height("out")))
         return "(let* (%s) %s)" % (self.load(path), body)
 
     def marked(self, tag, call, path):
@@ -110,9 +133,8 @@ class ScriptFu2:
     def call_render(self, tag, path, w, h, tileable, quality, seed):
         return self.marked(tag, self.render_call(w, h, tileable, quality, seed), path)
 
-    def call_solid(self, tag, path, size, volume, quality, seed):
-        return self.marked(tag, "(plug-in-texsynth-solid RUN-NONINTERACTIVE img %s %d %s %d %d)"
-                           % (self.drawables(), size, quote(volume), quality, seed), path)
+    def call_solid(self, tag, path, size, volume, quality, seed, cell_structure="FALSE"):
+        return self.marked(tag, self.solid_call(size, volume, quality, seed, cell_structure), path)
 
 
 class Gimp:

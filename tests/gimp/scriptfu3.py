@@ -32,6 +32,9 @@ class ScriptFu3(ScriptFu2):
     def active_layer(self, image):
         return "(vector-ref (car (gimp-image-get-layers %s)) 0)" % image
 
+    def top_layer(self, image):
+        return self.active_layer(image)
+
     def save(self, image, layer, path):
         return "(gimp-file-save RUN-NONINTERACTIVE %s %s -1)" % (image, quote(path))
 

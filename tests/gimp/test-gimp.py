@@ -7,9 +7,11 @@
 # Usage: test-gimp.py --gimp GIMP-CONSOLE --plugin PLUG-IN --measure TEXSYNTH-MEASURE
 
 import argparse
+import filecmp
 import json
 import os
 import re
+import struct
 import subprocess
 import sys
 
@@ -43,8 +45,11 @@ sf = gimp.sf  # the version's Script-Fu dialect
 tsops.note("GIMP %s (%s), profile %s" % (gimp.version, args.gimp, gimp.profile))
 
 # --- exemplars: 8-bit RGB, 16-bit RGB, 8-bit RGBA with transparent corners, grey
-bark = os.path.join(os.environ.get("TEXSYNTH_SOURCE_ROOT", "."), "examples", "bark.png")
+source_root = os.environ.get("TEXSYNTH_SOURCE_ROOT", ".")
+bark = os.path.join(source_root, "examples", "bark.png")
 brick = os.path.join(os.path.dirname(bark), "brick.png")
+# Light stones in dark joints: what the solid's cell structure is for.
+stones = os.path.join(source_root, "tests", "exemplars", "stone33.png")
 bark16 = os.path.join(work, "bark16.png")
 tsops.convert(bark, bark16, "R'G'B' u16", bitdepth=16)
 brick_rgba = os.path.join(work, "brick-rgba.png")
@@ -75,6 +80,27 @@ render_b = os.path.join(work, "render-b.png")
 render_shape = os.path.join(work, "render-shape.png")
 tileable = os.path.join(work, "tileable.png")
 volume = os.path.join(work, "volume.vol")
+# The same solid without and with the cell structure: its volume and the
+# exported slice across x.
+CELLS_SIZE = 32
+plain_volume = os.path.join(work, "plain.vol")
+cells_volume = os.path.join(work, "cells.vol")
+plain_slice = os.path.join(work, "plain-x.png")
+cells_slice = os.path.join(work, "cells-x.png")
+# GIMP 2.10 keeps last values as the bytes of TsSolidArgs: size, path[4096],
+# quality, seed, then cell_structure, which older plug-ins' structs lack.
+LAST_VALUES = [("lastold", None, os.path.join(work, "last-old-x.png")),
+               ("lastcells", 1, os.path.join(work, "last-cells-x.png"))]
+
+
+def last_values(cell_structure):
+    """The solidplain/solidcells settings as stored bytes; None: the older
+    struct without cell_structure."""
+    path = os.path.join(work, "last.vol").encode()
+    data = struct.pack("<i4096sii", CELLS_SIZE, path, 1, 4)
+    return data if cell_structure is None else data + struct.pack("<i", cell_structure)
+
+
 has_solid_ops = all(gimpbatch.gegl_has(op) for op in ("texsynth:volume-save",
                                                        "texsynth:volume-slice"))
 
@@ -104,6 +130,16 @@ errors = [
 ]
 if has_solid_ops:
     batch.append(sf.solid_report("solid", bark, 16, volume, 1, 2))
+    batch.append(sf.solid_report("solidplain", stones, CELLS_SIZE, plain_volume, 1, 4,
+                                 "FALSE", save=plain_slice))
+    batch.append(sf.solid_report("solidcells", stones, CELLS_SIZE, cells_volume, 1, 4,
+                                 "TRUE", save=cells_slice))
+    if gimp.version == 2:
+        batch += [sf.solid_last_values_report(tag, stones, last_values(cells), save)
+                  for tag, cells, save in LAST_VALUES]
+    # Transparent corners: refused with a reason before anything runs.
+    errors.append(sf.call_solid("cellsalpha", brick_rgba, 16, os.path.join(work, "a.vol"), 1, 1,
+                                "TRUE"))
 if gimp.version >= 3:
     batch.append(sf.filter_report("filter", brick))
 
@@ -172,6 +208,58 @@ if tsops.check(r is not None and os.path.isfile(tileable), "tileable: ran and ex
     tsops.check(after < 1.0, "tileable: the result tiles (seam figure %.2f < 1.0)" % after)
 
 
+def volume_slice_x(path, size, png):
+    """The volume's middle slice across x, read back by texsynth:volume-load:
+    what the plug-in's top layer must show."""
+    code, _, _ = tsops.run_gegl(["-o", png, "--", "texsynth:volume-load", "path=" + path,
+                                 "axis=x", "index=%d" % (size // 2)])
+    return tsops.load(png)[2] if code == 0 and os.path.isfile(png) else None
+
+
+def check_cell_structure():
+    for tag, path, slice_png in (("solidplain", plain_volume, plain_slice),
+                                 ("solidcells", cells_volume, cells_slice)):
+        r = fields(lines, "TSRESULT " + tag)
+        if tsops.check(r is not None, "%s: returns an image" % tag):
+            w, h, layers = map(int, r[:3])
+            tsops.check((w, h, layers) == (CELLS_SIZE, CELLS_SIZE, 3),
+                        "%s: three %dx%d slices (got %dx%d, %d)"
+                        % (tag, CELLS_SIZE, CELLS_SIZE, w, h, layers))
+        size = os.path.getsize(path) if os.path.isfile(path) else 0
+        # At least a byte per channel of every RGB voxel.
+        tsops.check(size >= CELLS_SIZE ** 3 * 3, "%s: the volume file was written (%d bytes)"
+                    % (tag, size))
+        if not tsops.check(os.path.isfile(slice_png), "%s: the slice across x exported" % tag):
+            continue
+        # The slices must come from the volume in the file: the slice op
+        # gets the cell structure too. 8-bit exports round alike to 1/255.
+        _, _, shown = tsops.load(slice_png)
+        in_file = volume_slice_x(path, CELLS_SIZE, os.path.join(work, tag + "-file-x.png"))
+        diff = tsops.max_abs_diff(shown, in_file) if in_file else float("inf")
+        tsops.check(diff <= 1.5 / 255, "%s: the slice shown is the file's (max difference %g)"
+                    % (tag, diff))
+    if os.path.isfile(plain_slice) and os.path.isfile(cells_slice):
+        diff = tsops.max_abs_diff(tsops.load(plain_slice)[2], tsops.load(cells_slice)[2])
+        tsops.check(diff > 0.2, "solid: the cell structure changes the slices with the same "
+                    "seed (max difference %.3f)" % diff)
+    # Last values: the older struct is read without cell_structure (off),
+    # this one with it.
+    for (tag, cells, save), same_as in zip(LAST_VALUES, (plain_slice, cells_slice)):
+        if gimp.version != 2 or not os.path.isfile(same_as):
+            continue
+        r = fields(lines, "TSRESULT " + tag)
+        ok = tsops.check(r is not None and os.path.isfile(save) and
+                         list(map(int, r[:2])) == [CELLS_SIZE, CELLS_SIZE],
+                         "%s: stored last values of %d bytes read (got %s)"
+                         % (tag, len(last_values(cells)), r))
+        diff = tsops.max_abs_diff(tsops.load(save)[2], tsops.load(same_as)[2]) if ok else 1.0
+        tsops.check(diff == 0, "%s: the slice is %s's (max difference %g)"
+                    % (tag, os.path.basename(same_as), diff))
+    tsops.check(os.path.isfile(plain_volume) and os.path.isfile(cells_volume) and
+                not filecmp.cmp(plain_volume, cells_volume, shallow=False),
+                "solid: the cell structure changes the volume file")
+
+
 def calling_error(tag, pattern):
     text = gimp.error_text(lines, tag)
     tsops.check(text is not None and sf.is_calling_error(text) and re.search(pattern, text),
@@ -184,6 +272,11 @@ calling_error("badwidth", r"width must be between 1 and 16384|argument 4 .*value
 calling_error("badquality", r"[Qq]uality must be between 1 and 10|argument 7 .*value 11 out of range: 1 to 10")
 calling_error("badpath", r"folder \"/nonexistent-folder\" does not exist")
 calling_error("badformat", r"must end in \.vol, \.dds or \.png")
+if has_solid_ops:
+    text = gimp.error_text(lines, "cellsalpha")
+    tsops.check(text is not None and "needs an opaque exemplar" in text,
+                "cell structure on a layer with transparent pixels: an error saying why (%r)"
+                % text)
 
 if has_solid_ops:
     r = fields(lines, "TSRESULT solid")
@@ -193,6 +286,7 @@ if has_solid_ops:
                     % (w, h, layers))
     size = os.path.getsize(volume) if os.path.isfile(volume) else 0
     tsops.check(size >= 16 ** 3 * 4, "solid: the volume file was written (%d bytes)" % size)
+    check_cell_structure()
 else:
     tsops.note("SKIP  solid: texsynth:volume-save / texsynth:volume-slice are not built yet")
 
