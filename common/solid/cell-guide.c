@@ -31,6 +31,32 @@
 /* Bins of the histogram that places the walls' thickness. */
 #define GUIDE_BINS 4096
 
+/* The alpha code of a distance (solid.h): slope `near` within `knee`
+ * pixels of a wall, `far` beyond. */
+typedef struct
+{
+  float near, far, knee;
+} GuideCode;
+
+static const GuideCode COARSE_CODE = { TS_SOLID_CELL_GUIDE_COARSE_NEAR, TS_SOLID_CELL_GUIDE_COARSE_FAR,
+                                       TS_SOLID_CELL_GUIDE_COARSE_KNEE };
+static const GuideCode FINEST_CODE = { TS_SOLID_CELL_GUIDE_FINEST_NEAR, TS_SOLID_CELL_GUIDE_FINEST_FAR,
+                                       TS_SOLID_CELL_GUIDE_FINEST_KNEE };
+
+static float
+guide_encode (GuideCode c, float d)
+{
+  float beyond = fmaxf (fabsf (d) - c.knee, 0.0f);
+  return c.near * (d - copysignf (beyond, d)) + c.far * copysignf (beyond, d);
+}
+
+static float
+guide_decode (GuideCode c, float code)
+{
+  float beyond = fmaxf (fabsf (code) - c.near * c.knee, 0.0f);
+  return (code - copysignf (beyond, code)) / c.near + copysignf (beyond, code) / c.far;
+}
+
 /* Signed distance from pixel i to the nearest pixel of the other phase
  * (positive in the light phase), clipped to GUIDE_MAX_DISTANCE. Rings of
  * growing radius, so a pixel near a joint stops early. */
@@ -130,7 +156,7 @@ ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, TsCance
     {
       /* Only after all distances: the phases are read from `light`. */
       for (size_t i = 0; i < count; i++)
-        working->pixels[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + TS_SOLID_CELL_GUIDE_WEIGHT * distance[i];
+        working->pixels[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + guide_encode (COARSE_CODE, distance[i]);
       guide->sections += sections;
       guide->area += count;
       guide->dark += dark;
@@ -291,7 +317,6 @@ ts_solid_cell_guide_level (TsSolidCellGuide *g, size_t n, TsCancel *cancel)
   for (size_t i = 0; i < voxels; i++)
     g->field[i] = fmaxf (g->field[i] - wall, GUIDE_MIN_DISTANCE);
   g->field_edge = n;
-  g->weight = n == g->edge ? TS_SOLID_CELL_GUIDE_FINEST_WEIGHT : TS_SOLID_CELL_GUIDE_WEIGHT;
   return TS_OK;
 }
 
@@ -299,11 +324,11 @@ void
 ts_solid_cell_guide_finest (TsImage *finest)
 {
   size_t count = ts_image_pixel_count (finest);
-  float scale = TS_SOLID_CELL_GUIDE_FINEST_WEIGHT / TS_SOLID_CELL_GUIDE_WEIGHT;
   for (size_t i = 0; i < count; i++)
     {
       float *alpha = &finest->pixels[i * TS_CHANNELS + 3];
-      *alpha = TS_ALPHA_SCALE + scale * (*alpha - TS_ALPHA_SCALE);
+      *alpha = TS_ALPHA_SCALE
+               + guide_encode (FINEST_CODE, guide_decode (COARSE_CODE, *alpha - TS_ALPHA_SCALE));
     }
 }
 
@@ -311,8 +336,9 @@ void
 ts_solid_cell_guide_apply (const TsSolidCellGuide *g, float *value)
 {
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
+  GuideCode code = g->field_edge == g->edge ? FINEST_CODE : COARSE_CODE;
   for (size_t i = 0; i < voxels; i++)
-    value[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + g->weight * g->field[i];
+    value[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + guide_encode (code, g->field[i]);
 }
 
 void

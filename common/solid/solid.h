@@ -40,15 +40,22 @@ void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
  * 5th and 95th lightness percentiles. */
 float ts_solid_phase_split (const TsImage *ex);
 
-/* The cell structure guide (cell-guide.c). Distances ride in the working
- * alpha channel as TS_ALPHA_SCALE + weight x distance (pixels). At the
- * coarser levels, which lay out the stones, 8: 128^3 cells show closed
- * mortar around polygons (4 and 2 let stones merge: light sections 0.8
- * and 0.6 x the exemplar's). At the finest level 3, which lets colour
- * decide the edges' detail: with 8 there, coherence was 1.10-1.17 x the
- * truth's on seeds 1-5 (3 of 5 above 1.15), with 3 1.10-1.15. */
-#define TS_SOLID_CELL_GUIDE_WEIGHT        8.0f
-#define TS_SOLID_CELL_GUIDE_FINEST_WEIGHT 3.0f
+/* The cell structure guide (cell-guide.c). A signed distance d (pixels,
+ * positive inside a cell) rides in the working alpha channel as
+ * TS_ALPHA_SCALE + code (d): slope NEAR within KNEE pixels of a wall,
+ * FAR beyond, because where the walls lie matters more than how deep in
+ * its cell a pixel is. The coarser levels lay the cells out: 8 within
+ * 3 px (at 8 everywhere, coherence was 1.10-1.17 x the truth's). The
+ * finest level draws the joints: 12 within 1 px, 1 beyond. Against the
+ * one slope 3 there, 128^3 seeds 1-2: coherence 1.05 and 1.09 x the
+ * truth's (from 1.10 and 1.15), specks 1.1 and 1.6 x (from 4.0 and
+ * 2.9), light sections 0.93 and 0.91 (from 0.80 and 0.88). */
+#define TS_SOLID_CELL_GUIDE_COARSE_NEAR 8.0f
+#define TS_SOLID_CELL_GUIDE_COARSE_FAR  2.0f
+#define TS_SOLID_CELL_GUIDE_COARSE_KNEE 3.0f
+#define TS_SOLID_CELL_GUIDE_FINEST_NEAR 12.0f
+#define TS_SOLID_CELL_GUIDE_FINEST_FAR  1.0f
+#define TS_SOLID_CELL_GUIDE_FINEST_KNEE 1.0f
 
 typedef struct
 {
@@ -61,15 +68,14 @@ typedef struct
   uint32_t *order;                /* seeds sorted by bucket             */
   float    *field;                /* field_edge^3 distances to a wall   */
   size_t    field_edge;
-  float     weight;               /* of the field's level               */
 } TsSolidCellGuide;
 
 /* Writes the exemplar's signed distances to its mortar into `working`'s
- * alpha (TS_SOLID_CELL_GUIDE_WEIGHT) and adds its sections and pixels to
+ * alpha (the coarser levels' code) and adds its sections and pixels to
  * `guide`. */
 TsStatus ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide,
                                        TsCancel *cancel);
-/* Turns the finest exemplar level's alpha to the finest weight. */
+/* Turns the finest exemplar level's alpha to the finest level's code. */
 void     ts_solid_cell_guide_finest (TsImage *finest);
 /* Draws the Voronoi seeds for a volume of edge `edge`, once the
  * exemplars are in. */

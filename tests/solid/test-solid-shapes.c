@@ -230,12 +230,14 @@ main (void)
     { "cells", 0.90, 1.15, 1.08, 5.5, false, 0.0 },
     { "blobs", 0.90, 1.15, 1.08, 1.8, false, 0.0 },
     { "grains", 0.90, 1.15, 1.08, 2.2, false, 0.0 },
-    /* With the cell structure, mean of seeds 1-3: sharpness 1.01,
-     * coherence 1.00, completeness 1.03, specks 4.3 x the truth's;
-     * axis-edges 0.941; light sections 0.81 x the exemplar's (the
+    /* With the cell structure, mean of seeds 1-3: sharpness 1.06,
+     * coherence 1.02, completeness 1.02, specks 2.0 x the truth's;
+     * axis-edges 0.996; light sections 0.91 x the exemplar's (the
      * truth's 0.95; without the guide 0.54: neighbouring stones merge
-     * where the mortar does not close). */
-    { "cells", 0.90, 1.15, 1.08, 5.5, true, 0.75 },
+     * where the mortar does not close). With one slope of 3 at the
+     * finest level (solid.h), specks were 4.3 x and sections 0.81, which
+     * these bounds catch. */
+    { "cells", 0.90, 1.15, 1.08, 3.0, true, 0.86 },
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
     test_kind (&cases[i]);
