@@ -20,7 +20,7 @@
  * pixel is deep inside a stone either way, and the clip bounds the cost. */
 #define GUIDE_MAX_DISTANCE 24
 /* Inside the dark phase they are clipped here, which keeps the working
- * alpha (TS_ALPHA_SCALE + weight x distance) well above 0: alpha 0 would
+ * alpha (TS_ALPHA_SCALE + code (distance), solid.h) well above 0: alpha 0 would
  * make a pixel transparent to every step. */
 #define GUIDE_MIN_DISTANCE (-10.0f)
 /* Light components smaller than this are specks, not stone sections. */
