@@ -28,6 +28,13 @@
 /* N_A = c * lambda^(2/3): sections per unit area of a plane through a
  * Poisson-Voronoi tessellation of lambda cells per unit volume. */
 #define GUIDE_SECTIONS_PER_CELL 1.4581
+/* The least in-slice share of a wall's normal the finest level divides
+ * a distance by (cell_guide_apply): a slice that cuts a wall at a
+ * glancing angle then sees it as far off as the exemplar, a slice
+ * itself, would. 128^3 seeds 1-5 with it: specks 0.99-1.40 x the
+ * truth's (from 1.13-1.61), coherence within +0.006 of without. At 0.3:
+ * specks as low, coherence up to +0.013 (seed 5: 1.149 x the truth's). */
+#define GUIDE_MIN_SLANT 0.5f
 /* Bins of the histogram that places the walls' thickness. */
 #define GUIDE_BINS 4096
 
@@ -252,13 +259,13 @@ nearest_two_in_bucket (const TsSolidCellGuide *g, const float p[3], size_t first
 }
 
 /* Distance from p (finest voxels) to the wall between its two nearest
- * seeds. The buckets are searched in shells around p's (periodically),
+ * seeds, and the wall's unit normal. The buckets are searched in shells around p's (periodically),
  * up to two buckets out; a shell ends the search once no seed beyond it
  * can be nearer than the second nearest found. Why shells: most voxels
  * are settled by the 27 buckets around theirs, and the 125 of a fixed
  * reach made the guide a tenth of a 128^3 synthesis. */
 static float
-wall_distance (const TsSolidCellGuide *g, const float p[3])
+wall_distance (const TsSolidCellGuide *g, const float p[3], float normal[3])
 {
   float d[2] = { INFINITY, INFINITY }, o[2][3] = { { 0 } };
   float width = (float) g->edge / (float) g->buckets;
@@ -293,13 +300,17 @@ wall_distance (const TsSolidCellGuide *g, const float p[3])
       if (margin > 0.0f && d[1] <= margin * margin)
         break;
     }
+  normal[0] = normal[1] = normal[2] = 0.0f;
   if (!isfinite (d[1]))
     return (float) GUIDE_MAX_DISTANCE;
   {
     float gap = 0.0f;
     for (int a = 0; a < 3; a++)
       gap += (o[1][a] - o[0][a]) * (o[1][a] - o[0][a]);
-    return (d[1] - d[0]) / (2.0f * sqrtf (fmaxf (gap, 1e-12f)));
+    gap = sqrtf (fmaxf (gap, 1e-12f));
+    for (int a = 0; a < 3; a++)
+      normal[a] = (o[1][a] - o[0][a]) / gap;
+    return (d[1] - d[0]) / (2.0f * gap);
   }
 }
 
@@ -310,8 +321,11 @@ ts_solid_cell_guide_level (TsSolidCellGuide *g, size_t n, TsCancel *cancel)
   float scale = (float) g->edge / (float) n, top = 0.0f, wall = 0.0f;
 
   free (g->field);
+  free (g->slant);
   g->field = malloc (voxels * sizeof (float));
-  if (!g->field)
+  /* Only the finest level measures distances in the slices. */
+  g->slant = n == g->edge ? malloc (voxels * TS_SOLID_AXES) : NULL;
+  if (!g->field || (n == g->edge && !g->slant))
     return TS_ERROR_OUT_OF_MEMORY;
 #pragma omp parallel for schedule(dynamic, 1) if (n >= TS_SOLID_PARALLEL_EDGE)
   for (size_t zy = 0; zy < n * n; zy++)
@@ -322,7 +336,12 @@ ts_solid_cell_guide_level (TsSolidCellGuide *g, size_t n, TsCancel *cancel)
         {
           float p[3] = { ((float) x + 0.5f) * scale, ((float) (zy % n) + 0.5f) * scale,
                          ((float) (zy / n) + 0.5f) * scale };
-          g->field[zy * n + x] = fminf (wall_distance (g, p), (float) GUIDE_MAX_DISTANCE);
+          float normal[3];
+          g->field[zy * n + x] = fminf (wall_distance (g, p, normal), (float) GUIDE_MAX_DISTANCE);
+          /* The normal's share in the slices across axis a. */
+          for (int a = 0; a < TS_SOLID_AXES && g->slant; a++)
+            g->slant[(zy * n + x) * TS_SOLID_AXES + (size_t) a]
+              = (uint8_t) lrintf (255.0f * sqrtf (fmaxf (1.0f - normal[a] * normal[a], 0.0f)));
         }
     }
   if (ts_cancel_requested (cancel))
@@ -362,12 +381,21 @@ ts_solid_cell_guide_finest (TsImage *finest)
 }
 
 void
-ts_solid_cell_guide_apply (const TsSolidCellGuide *g, float *value)
+ts_solid_cell_guide_apply (const TsSolidCellGuide *g, float *value, int axis)
 {
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
-  GuideCode code = g->field_edge == g->edge ? FINEST_CODE : COARSE_CODE;
+  GuideCode code = g->slant ? FINEST_CODE : COARSE_CODE;
   for (size_t i = 0; i < voxels; i++)
-    value[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + guide_encode (code, g->field[i]);
+    {
+      float d = g->field[i];
+      if (g->slant)
+        {
+          float slant = (float) g->slant[i * TS_SOLID_AXES + (size_t) axis] / 255.0f;
+          d = fmaxf (fminf (d / fmaxf (slant, GUIDE_MIN_SLANT), (float) GUIDE_MAX_DISTANCE),
+                     GUIDE_MIN_DISTANCE);
+        }
+      value[i * TS_CHANNELS + 3] = TS_ALPHA_SCALE + guide_encode (code, d);
+    }
 }
 
 void
@@ -377,5 +405,6 @@ ts_solid_cell_guide_free (TsSolidCellGuide *g)
   free (g->bucket_start);
   free (g->order);
   free (g->field);
+  free (g->slant);
   memset (g, 0, sizeof *g);
 }

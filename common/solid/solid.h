@@ -67,6 +67,10 @@ typedef struct
   size_t   *bucket_start;         /* buckets^3 + 1 offsets into `order` */
   uint32_t *order;                /* seeds sorted by bucket             */
   float    *field;                /* field_edge^3 distances to a wall   */
+  uint8_t  *slant;                /* finest level: field_edge^3 x 3, the
+                                     share (of 255) of the wall's normal
+                                     in the slices across each axis; NULL
+                                     at the coarser levels             */
   size_t    field_edge;
 } TsSolidCellGuide;
 
@@ -82,8 +86,9 @@ void     ts_solid_cell_guide_finest (TsImage *finest);
 TsStatus ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed);
 /* The distances of a level of edge n (polls `cancel`). */
 TsStatus ts_solid_cell_guide_level (TsSolidCellGuide *guide, size_t n, TsCancel *cancel);
-/* Writes the level's distances into the alpha of `value`. */
-void     ts_solid_cell_guide_apply (const TsSolidCellGuide *guide, float *value);
+/* Writes the level's distances into the alpha of `value`; at the finest
+ * level, as measured in the slices across `axis`. */
+void     ts_solid_cell_guide_apply (const TsSolidCellGuide *guide, float *value, int axis);
 void     ts_solid_cell_guide_free (TsSolidCellGuide *guide);
 
 /* One slice orientation at one level. */

@@ -376,9 +376,6 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
   TsSolidHistogramDelta delta;
   TsStatus status;
 
-  /* The E-step copied the exemplar's distances; the volume's are fixed. */
-  if (run->cells.field)
-    ts_solid_cell_guide_apply (&run->cells, l->value);
   memset (&it, 0, sizeof it);
   memset (delta, 0, sizeof delta);
   *changed = 0;
@@ -393,6 +390,11 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
         continue;
       /* Each orientation its own slices of the sparse grid. */
       it.t_offset[a] = (stream >> (16 + a)) % TS_SOLID_SLICE_SPACING;
+      /* The E-step copied the exemplar's distances; the volume's are
+       * fixed, and at the finest level measured in this orientation's
+       * slices. */
+      if (run->cells.field)
+        ts_solid_cell_guide_apply (&run->cells, l->value, a);
       it.matches[a] = malloc (ts_solid_match_slices (n) * it.gu.centres * it.gv.centres
                               * sizeof (TsSolidMatch));
       status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, it.t_offset[a],
