@@ -226,8 +226,9 @@ ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed)
   return TS_OK;
 }
 
-/* Folds the seeds of bucket b into p's two nearest (squared distances d
- * and offsets o, nearest first). */
+/* Folds seeds first..last (of `order` if sorted, else in their own
+ * order) into p's two nearest (squared distances d and offsets o,
+ * nearest first). */
 static void
 nearest_two_in_bucket (const TsSolidCellGuide *g, const float p[3], size_t first, size_t last,
                        int sorted, float d[2], float o[2][3])
