@@ -114,12 +114,20 @@ phase_thickness (const TsImage *exemplar, const float *volume, size_t n, double 
   return ok;
 }
 
+/* Lightness spread within light sections: squared deviations from
+ * their own section's mean, and the pixels they sum over. */
+typedef struct
+{
+  double squares;
+  size_t pixels;
+} Tones;
+
 /* Specks of one wrapped slice's phase mask, and in *sections its pieces
  * of the light phase (mask 0) larger than a speck; `stack` holds w * h
  * indices and `seen` w * h flags. */
 static size_t
-count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *stack,
-              size_t *sections)
+count_specks (const uint8_t *mask, const float *pixels, size_t w, size_t h, uint8_t *seen,
+              size_t *stack, size_t *sections, Tones *tones)
 {
   size_t specks = 0;
 
@@ -127,6 +135,7 @@ count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *st
   for (size_t start = 0; start < w * h; start++)
     {
       size_t top = 0, size = 0;
+      double sum = 0.0, square = 0.0;
       if (seen[start])
         continue;
       seen[start] = 1;
@@ -137,6 +146,8 @@ count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *st
           size_t next[4] = { y * w + (x + w - 1) % w, y * w + (x + 1) % w,
                              ((y + h - 1) % h) * w + x, ((y + 1) % h) * w + x };
           size++;
+          sum += pixels[i * TS_CHANNELS];
+          square += (double) pixels[i * TS_CHANNELS] * pixels[i * TS_CHANNELS];
           for (int k = 0; k < 4; k++)
             if (!seen[next[k]] && mask[next[k]] == mask[start])
               {
@@ -146,6 +157,11 @@ count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *st
         }
       specks += size <= PHASE_SPECK_PIXELS;
       *sections += size > PHASE_SPECK_PIXELS && !mask[start];
+      if (size > PHASE_SPECK_PIXELS && !mask[start])
+        {
+          tones->squares += fmax (square - sum * sum / (double) size, 0.0);
+          tones->pixels += size;
+        }
     }
   return specks;
 }
@@ -154,7 +170,7 @@ count_specks (const uint8_t *mask, size_t w, size_t h, uint8_t *seen, size_t *st
  * with volume NULL of the exemplar (n x n) alone. */
 static bool
 count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *specks,
-              size_t *sections)
+              size_t *sections, Tones *tones)
 {
   TsImage slice = { n, n, malloc (n * n * TS_CHANNELS * sizeof (float)) };
   uint8_t *mask = malloc (n * n), *seen = malloc (n * n);
@@ -163,6 +179,8 @@ count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *sp
   bool below, ok = slice.pixels && mask && seen && stack && split (exemplar, &threshold, &below);
 
   *specks = *sections = 0;
+  tones->squares = 0.0;
+  tones->pixels = 0;
   for (int axis = 0; ok && axis < (volume ? 3 : 1); axis++)
     for (size_t k = 0; k < (volume ? n : 1); k++)
       {
@@ -171,7 +189,7 @@ count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *sp
           slice_cut (volume, n, axis, k, &slice);
         for (size_t i = 0; i < n * n; i++)
           mask[i] = cut->pixels[i * TS_CHANNELS] < threshold;
-        *specks += count_specks (mask, n, n, seen, stack, sections);
+        *specks += count_specks (mask, cut->pixels, n, n, seen, stack, sections, tones);
       }
   free (slice.pixels);
   free (mask);
@@ -184,7 +202,8 @@ bool
 phase_specks (const TsImage *exemplar, const float *volume, size_t n, double *per_thousand)
 {
   size_t specks, sections;
-  if (!count_phases (exemplar, volume, n, &specks, &sections))
+  Tones tones;
+  if (!count_phases (exemplar, volume, n, &specks, &sections, &tones))
     return false;
   *per_thousand = 1000.0 * (double) specks / (3.0 * (double) n * (double) n * (double) n);
   return true;
@@ -194,10 +213,26 @@ bool
 phase_sections (const TsImage *exemplar, const float *volume, size_t n, double *ratio)
 {
   size_t specks, ours, theirs;
+  Tones tones;
   if (exemplar->width != n || exemplar->height != n
-      || !count_phases (exemplar, volume, n, &specks, &ours)
-      || !count_phases (exemplar, NULL, n, &specks, &theirs))
+      || !count_phases (exemplar, volume, n, &specks, &ours, &tones)
+      || !count_phases (exemplar, NULL, n, &specks, &theirs, &tones))
     return false;
   *ratio = theirs ? (double) ours / (3.0 * (double) n * (double) theirs) : NAN;
+  return true;
+}
+
+bool
+phase_tone_spread (const TsImage *exemplar, const float *volume, size_t n, double *ratio)
+{
+  size_t specks, sections;
+  Tones ours, theirs;
+  if (exemplar->width != n || exemplar->height != n
+      || !count_phases (exemplar, volume, n, &specks, &sections, &ours)
+      || !count_phases (exemplar, NULL, n, &specks, &sections, &theirs))
+    return false;
+  *ratio = ours.pixels && theirs.pixels && theirs.squares > 0.0
+             ? sqrt (ours.squares / (double) ours.pixels / (theirs.squares / (double) theirs.pixels))
+             : NAN;
   return true;
 }

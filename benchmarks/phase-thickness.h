@@ -37,4 +37,10 @@ bool phase_specks (const TsImage *exemplar, const float *volume, size_t n, doubl
  * exemplar is not n x n. */
 bool phase_sections (const TsImage *exemplar, const float *volume, size_t n, double *ratio);
 
+/* The lightness spread within sections (root mean square deviation from
+ * each section's own mean) over every x, y and z slice of `volume`, over
+ * the exemplar's: where a stone's section copies several exemplar stones
+ * of different tones it rises. False as phase_sections. */
+bool phase_tone_spread (const TsImage *exemplar, const float *volume, size_t n, double *ratio);
+
 #endif

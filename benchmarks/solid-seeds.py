@@ -34,7 +34,7 @@ import sys
 FIGURE = re.compile(r"^(\w+)\s+(truth|ours|sample)\s+coherence\s+([\d.]+) completeness\s+([\d.]+) "
                     r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+) "
                     r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan) streaks ([\d.]+) "
-                    r"grid ([\d.]+|nan) specks ([\d.]+|nan) sections ([\d.]+|nan)$")
+                    r"grid ([\d.]+|nan) specks ([\d.]+|nan) sections ([\d.]+|nan) tones ([\d.]+|nan)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -78,8 +78,8 @@ def run_seed(shapes, size, seed, kinds, new_sample, cell_structure):
         if m:
             figures[(m.group(1), m.group(2))] = dict(zip(
                 ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all", "thick",
-                 "planes_lo", "planes_hi", "streaks", "grid", "specks", "sections"),
-                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))))
+                 "planes_lo", "planes_hi", "streaks", "grid", "specks", "sections", "tones"),
+                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -152,7 +152,8 @@ def main():
                          f"lines {o['planes_lo']:.2f}-{o['planes_hi']:.2f} "
                          f"streaks {streaks[kind][-1]:.2f} "
                          f"grid {o['grid']:.2f}/{t['grid']:.2f} specks {specks[kind][-1]:.2f} "
-                         f"sections {o['sections']:.2f}/{t['sections']:.2f}] {sample}"
+                         f"sections {o['sections']:.2f}/{t['sections']:.2f} "
+                         f"tones {o['tones']:.2f}/{t['tones']:.2f}] {sample}"
                          f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
     print("columns: sharpness coherence completeness axis-edges seam; "
@@ -162,7 +163,9 @@ def main():
           "edge anisotropy of any x, y or z slice (slice-figures.h); grid: ours/truth step "
           "across a lattice of planes over the others (plane-steps.h); specks: ours / truth "
           "specks per 1000 pixels of every x, y and z slice (phase-thickness.h); sections: ours/truth "
-          "light sections per slice over the exemplar's (phase-thickness.h); none is an aim]")
+          "light sections per slice over the exemplar's (phase-thickness.h); tones: ours/truth "
+          "lightness spread within those sections over the exemplar's (phase-thickness.h); "
+          "none is an aim]")
     for kind in kinds:
         means, worst = mean_and_worst(values, kind, len(args.seeds))
         all_mean = sum(sharp_all[kind]) / len(args.seeds)

@@ -24,7 +24,9 @@
  * 1000 pixels over every x, y and z slice ("specks", phase-thickness.h):
  * ragged, speckled edges that sharpness counts as edge, and the light
  * sections per slice over the exemplar's ("sections", phase-thickness.h):
- * stones merged or fragmented. -i
+ * stones merged or fragmented, and the lightness spread within those
+ * sections over the exemplar's ("tones", phase-thickness.h): stones
+ * pieced together from several of the exemplar's tones. -i
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
@@ -101,6 +103,14 @@ section_figure (const TsImage *exemplar, const float *volume, size_t n)
   return phase_sections (exemplar, volume, n, &ratio) ? ratio : NAN;
 }
 
+/* phase_tone_spread's ratio, NAN if out of memory. */
+static double
+tone_figure (const TsImage *exemplar, const float *volume, size_t n)
+{
+  double ratio;
+  return phase_tone_spread (exemplar, volume, n, &ratio) ? ratio : NAN;
+}
+
 /* plane_step_lattice's ratio, NAN if out of memory. */
 static double
 lattice (const float *volume, size_t n)
@@ -111,16 +121,16 @@ lattice (const float *volume, size_t n)
 
 static void
 print_row (const char *name, const char *what, const SliceFigures *f, double thick,
-           PlaneRange planes, double grid, double specks, double sections)
+           PlaneRange planes, double grid, double specks, double sections, double tones)
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
-          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f grid %.3f specks %.2f sections %.2f\n",
+          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f grid %.3f specks %.2f sections %.2f tones %.2f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
           f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi,
-          f->worst_slice_anisotropy, grid, specks, sections);
+          f->worst_slice_anisotropy, grid, specks, sections, tones);
 }
 
 /* The truth solid `name` drawn with another seed, measured against the
@@ -137,7 +147,8 @@ print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t 
     {
       phase_thickness (exemplar, sample, n, &thick);
       print_row (name, "sample", &f, thick, interior_planes (exemplar, sample, n), lattice (sample, n),
-                 speck_figure (exemplar, sample, n), section_figure (exemplar, sample, n));
+                 speck_figure (exemplar, sample, n), section_figure (exemplar, sample, n),
+                 tone_figure (exemplar, sample, n));
     }
   else
     fprintf (stderr, "solid-shapes: %s: could not render or measure a new sample\n", name);
@@ -316,7 +327,7 @@ main (int argc, char **argv)
                   phase_thickness (&exemplar, truth, n, &thick);
                   print_row (base, "truth", &f, thick, interior_planes (&exemplar, truth, n),
                              lattice (truth, n), speck_figure (&exemplar, truth, n),
-                             section_figure (&exemplar, truth, n));
+                             section_figure (&exemplar, truth, n), tone_figure (&exemplar, truth, n));
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
@@ -326,7 +337,7 @@ main (int argc, char **argv)
                   phase_thickness (&exemplar, ours, n, &thick);
                   print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n),
                              lattice (ours, n), speck_figure (&exemplar, ours, n),
-                             section_figure (&exemplar, ours, n));
+                             section_figure (&exemplar, ours, n), tone_figure (&exemplar, ours, n));
                 }
               if (truth && new_sample && !print_new_sample (base, &exemplar, n, seed))
                 status = 1;

@@ -231,12 +231,13 @@ ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed)
  * nearest first). */
 static void
 nearest_two_in_bucket (const TsSolidCellGuide *g, const float p[3], size_t first, size_t last,
-                       int sorted, float d[2], float o[2][3])
+                       int sorted, float d[2], float o[2][3], uint32_t *nearest)
 {
   float half = 0.5f * (float) g->edge;
   for (size_t k = first; k < last; k++)
     {
-      const float *s = g->seeds + 3 * (sorted ? g->order[k] : k);
+      uint32_t id = sorted ? g->order[k] : (uint32_t) k;
+      const float *s = g->seeds + 3 * (size_t) id;
       float off[3], dist = 0.0f;
       for (int a = 0; a < 3; a++)
         {
@@ -250,6 +251,7 @@ nearest_two_in_bucket (const TsSolidCellGuide *g, const float p[3], size_t first
           memcpy (o[1], o[0], sizeof o[0]);
           d[0] = dist;
           memcpy (o[0], off, sizeof off);
+          *nearest = id;
         }
       else if (dist < d[1])
         {
@@ -267,7 +269,7 @@ nearest_two_in_bucket (const TsSolidCellGuide *g, const float p[3], size_t first
  * theirs, and the 125 of a fixed reach cost about 3 s of a 30 s 128^3
  * synthesis. */
 static float
-wall_distance (const TsSolidCellGuide *g, const float p[3], float normal[3])
+wall_distance (const TsSolidCellGuide *g, const float p[3], float normal[3], uint32_t *nearest)
 {
   float d[2] = { INFINITY, INFINITY }, o[2][3] = { { 0 } };
   float width = (float) g->edge / (float) g->buckets;
@@ -276,7 +278,7 @@ wall_distance (const TsSolidCellGuide *g, const float p[3], float normal[3])
 
   if (!reach)
     /* Small tessellations (under 5 buckets a side) search all seeds. */
-    nearest_two_in_bucket (g, p, 0, g->seed_count, 0, d, o);
+    nearest_two_in_bucket (g, p, 0, g->seed_count, 0, d, o, nearest);
   for (int a = 0; a < 3; a++)
     c[a] = (ptrdiff_t) bucket_of (p[a], g->buckets, g->edge);
   for (ptrdiff_t r = 0; r <= reach && reach; r++)
@@ -292,7 +294,7 @@ wall_distance (const TsSolidCellGuide *g, const float p[3], float normal[3])
                 continue;
               b = (size_t) ((((c[2] + bz + nb) % nb) * nb + (c[1] + by + nb) % nb) * nb
                             + (c[0] + bx + nb) % nb);
-              nearest_two_in_bucket (g, p, g->bucket_start[b], g->bucket_start[b + 1], 1, d, o);
+              nearest_two_in_bucket (g, p, g->bucket_start[b], g->bucket_start[b + 1], 1, d, o, nearest);
             }
       /* The nearest any unsearched seed can be: p's distance to the
        * searched cube's faces, less a little for rounding. */
@@ -325,10 +327,12 @@ ts_solid_cell_guide_level (TsSolidCellGuide *g, size_t n, TsCancel *cancel)
 
   free (g->field);
   free (g->slant);
+  free (g->cell_of);
   g->field = malloc (voxels * sizeof (float));
+  g->cell_of = n == g->edge ? malloc (voxels * sizeof (uint32_t)) : NULL;
   /* Only the finest level measures distances in the slices. */
   g->slant = n == g->edge ? malloc (voxels * TS_SOLID_AXES) : NULL;
-  if (!g->field || (n == g->edge && !g->slant))
+  if (!g->field || (n == g->edge && (!g->slant || !g->cell_of)))
     return TS_ERROR_OUT_OF_MEMORY;
 #pragma omp parallel for schedule(dynamic, 1) if (n >= TS_SOLID_PARALLEL_EDGE)
   for (size_t zy = 0; zy < n * n; zy++)
@@ -340,7 +344,10 @@ ts_solid_cell_guide_level (TsSolidCellGuide *g, size_t n, TsCancel *cancel)
           float p[3] = { ((float) x + 0.5f) * scale, ((float) (zy % n) + 0.5f) * scale,
                          ((float) (zy / n) + 0.5f) * scale };
           float normal[3];
-          g->field[zy * n + x] = fminf (wall_distance (g, p, normal), (float) GUIDE_MAX_DISTANCE);
+          uint32_t nearest = 0;
+          g->field[zy * n + x] = fminf (wall_distance (g, p, normal, &nearest), (float) GUIDE_MAX_DISTANCE);
+          if (g->cell_of)
+            g->cell_of[zy * n + x] = nearest;
           /* The normal's share in the slices across axis a. */
           for (int a = 0; a < TS_SOLID_AXES && g->slant; a++)
             g->slant[(zy * n + x) * TS_SOLID_AXES + (size_t) a]
@@ -407,6 +414,8 @@ void
 ts_solid_cell_guide_free (TsSolidCellGuide *g)
 {
   free (g->seeds);
+  free (g->cell_of);
+  free (g->cell_tone);
   free (g->bucket_start);
   free (g->order);
   free (g->field);

@@ -39,6 +39,11 @@
  * neighbours and stays. At least TS_SOLID_LONE_KNOWN neighbours outside
  * the current batch must say so.
  *
+ * Cell tones (the level's `cell_tone`, at the finest level with the
+ * cell guide): a vote for an exemplar stone whose tone differs from the
+ * voxel's cell's weighs less (cell-tone.c), so a cell copies stones of
+ * one tone.
+ *
  * Histogram matching: Kopf et al.'s weight 1 / (1 + excess) lowers the
  * votes of over-represented colours, so a near-tie goes to the colour the
  * volume lacks.
@@ -46,6 +51,7 @@
 #include "solid.h"
 #include "engine/indexing.h"
 
+#include <math.h>
 #include <string.h>
 
 /* 128^3 cells' sharpness 0.89 -> 0.93 x the exemplar's with it. */
@@ -82,6 +88,7 @@ typedef struct
   float        phase_weight[2];  /* [1] dark, [0] light */
   int32_t      phase_source[2];
   int          phase_axis[2];
+  float        tone;      /* the voxel's cell's tone, or NAN */
 } Votes;
 
 /* Strictly heavier wins, so among equal weights the first vote in the
@@ -97,9 +104,24 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
     return;
   if (ts_solid_same_pixel (value, v->current))
     weight *= TS_SOLID_INERTIA;
+  int dark = v->by_phase && value[0] < view->phase_split;
+  if (view->stone_tone && !isnan (v->tone))
+    {
+      float t;
+      /* The tone only lowers a weight: skip the look-up for a vote that
+       * could not win anyway, as most cannot (it cost 2 s of 128^3). */
+      if (weight <= v->weight && weight <= v->axis_weight[axis]
+          && (!v->by_phase || weight <= v->phase_weight[dark]))
+        return;
+      t = view->stone_tone[source];
+      if (!isnan (t))
+        {
+          float z = (t - v->tone) / TS_SOLID_TONE_SPREAD;
+          weight /= 1.0f + TS_SOLID_TONE_WEIGHT * z * z;
+        }
+    }
   if (v->by_phase)
     {
-      int dark = value[0] < view->phase_split;
       if (weight > v->phase_weight[dark])
         {
           v->phase_weight[dark] = weight;
@@ -271,6 +293,9 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
 {
   v->current = current;
   memcpy (v->xyz, xyz, sizeof v->xyz);
+  v->tone = level->cell_tone
+              ? level->cell_tone[level->cell_of[(xyz[2] * level->n + xyz[1]) * level->n + xyz[0]]]
+              : NAN;
   if (level->continuation > 0.0f || level->no_lone_voxels)
     face_neighbours (level, v);
   v->weight = 0.0f;

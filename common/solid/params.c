@@ -111,7 +111,7 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
   if (params->record_sources)
     bytes += n3 * sizeof (TsSolidSource);
   if (params->cell_structure)
-    bytes += n3 * (sizeof (float) + 3.0);       /* the guide's distances, slants */
+    bytes += n3 * (sizeof (float) + 3.0 + 4.0); /* the guide's distances, slants, cells */
   return bytes + 16.0 * 1024 * 1024;
 }
 

@@ -60,6 +60,7 @@ typedef struct
   float          *excess;
   uint32_t       *position_count;
   float           phase_split;  /* of the current level (phase-split.c) */
+  float          *stone_tone;   /* finest level, with the cell guide */
   TsSolidIndex    index;      /* all neighbourhoods of the current pass */
   TsSolidVarianceMap variance; /* their colour variances                */
 } Exemplar;
@@ -192,6 +193,7 @@ run_free (Run *run)
       free (ex->opaque);
       free (ex->excess);
       free (ex->position_count);
+      free (ex->stone_tone);
       ts_solid_index_free (&ex->index);
       ts_solid_variance_map_free (&ex->variance);
     }
@@ -237,7 +239,12 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
       if (status != TS_OK)
         return status;
       if (run->params->cell_structure)
-        ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
+        {
+          ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
+          status = ts_solid_stone_tones (&ex->pyramid.level[0], &ex->stone_tone);
+          if (status != TS_OK)
+            return status;
+        }
     }
   return run->params->cell_structure
            ? ts_solid_cell_guide_seed (&run->cells, run->params->size, run->params->seed)
@@ -307,6 +314,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       view->excess = run->params->histogram_matching ? ex->excess : NULL;
       view->position_count = ex->position_count;
       view->phase_split = ex->phase_split;
+      view->stone_tone = level == 0 ? ex->stone_tone : NULL;
     }
   return TS_OK;
 }
@@ -405,6 +413,9 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
     }
   if (status == TS_OK)
     assign_batches (batch_of, voxels, run->params->seed, stream);
+  /* The cells' tones as the M-step left them, fixed for all batches. */
+  if (status == TS_OK && l->cell_of)
+    status = ts_solid_cell_tones (&run->cells, l);
   for (uint8_t b = 0; b < TS_SOLID_BATCHES && status == TS_OK; b++)
     {
       if (histogram)
@@ -520,6 +531,8 @@ synthesize_level (Run *run, size_t level)
     return status;
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;
   run->level.no_lone_voxels = level == 0;
+  run->level.cell_of = run->cells.cell_of;
+  run->level.cell_tone = NULL;
   for (size_t e = 0; e < run->exemplars; e++)
     {
       /* This level's candidates seed the next finer level's MRPM. */
