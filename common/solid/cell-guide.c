@@ -91,24 +91,31 @@ signed_distance (const TsImage *ex, const uint8_t *light, size_t i)
   return fmaxf ((light[i] ? 1.0f : -1.0f) * (sqrtf ((float) best) - 0.5f), GUIDE_MIN_DISTANCE);
 }
 
-/* Light components of at least GUIDE_MIN_SECTION pixels (4-connected). */
+/* Light components of at least GUIDE_MIN_SECTION pixels (4-connected):
+ * their number, and each of their pixels' section's mean lightness in
+ * `tone` (NAN elsewhere), which cell tones compare (cell-tone.c). */
 static TsStatus
-count_sections (const TsImage *ex, const uint8_t *light, size_t *sections)
+count_sections (const TsImage *ex, const uint8_t *light, size_t *sections, float *tone)
 {
   size_t w = ex->width, count = w * ex->height;
   uint8_t *seen = calloc (count, 1);
   size_t *stack = malloc (count * sizeof (size_t));
+  size_t *member = malloc (count * sizeof (size_t));
 
   *sections = 0;
-  if (!seen || !stack)
+  if (!seen || !stack || !member)
     {
       free (seen);
       free (stack);
+      free (member);
       return TS_ERROR_OUT_OF_MEMORY;
     }
   for (size_t i = 0; i < count; i++)
+    tone[i] = NAN;
+  for (size_t i = 0; i < count; i++)
     {
       size_t top = 0, area = 0;
+      double sum = 0.0;
       if (!light[i] || seen[i])
         continue;
       seen[i] = 1;
@@ -118,7 +125,8 @@ count_sections (const TsImage *ex, const uint8_t *light, size_t *sections)
           size_t p = stack[--top], x = p % w, y = p / w;
           size_t next[4] = { x > 0 ? p - 1 : p, x + 1 < w ? p + 1 : p,
                              y > 0 ? p - w : p, y + 1 < ex->height ? p + w : p };
-          area++;
+          member[area++] = p;
+          sum += ex->pixels[p * TS_CHANNELS];
           for (int k = 0; k < 4; k++)
             if (light[next[k]] && !seen[next[k]])
               {
@@ -126,22 +134,28 @@ count_sections (const TsImage *ex, const uint8_t *light, size_t *sections)
                 stack[top++] = next[k];
               }
         }
-      if (area >= GUIDE_MIN_SECTION)
-        (*sections)++;
+      if (area < GUIDE_MIN_SECTION)
+        continue;
+      (*sections)++;
+      for (size_t k = 0; k < area; k++)
+        tone[member[k]] = (float) (sum / (double) area);
     }
   free (seen);
   free (stack);
+  free (member);
   return TS_OK;
 }
 
 TsStatus
-ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, TsCancel *cancel)
+ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, float **stone_tone,
+                              TsCancel *cancel)
 {
   size_t count = ts_image_pixel_count (working), sections, dark = 0;
   float split = ts_solid_phase_split (working);
   uint8_t *light = malloc (count);
   float *distance = malloc (count * sizeof (float));
-  TsStatus status = light && distance ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+  float *tone = malloc (count * sizeof (float));
+  TsStatus status = light && distance && tone ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
 
   for (size_t i = 0; status == TS_OK && i < count; i++)
     {
@@ -149,7 +163,7 @@ ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, TsCance
       dark += !light[i];
     }
   if (status == TS_OK)
-    status = count_sections (working, light, &sections);
+    status = count_sections (working, light, &sections, tone);
   if (status == TS_OK)
     {
 #pragma omp parallel for schedule(dynamic, 256)
@@ -167,9 +181,12 @@ ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, TsCance
       guide->sections += sections;
       guide->area += count;
       guide->dark += dark;
+      *stone_tone = tone;
+      tone = NULL;
     }
   free (light);
   free (distance);
+  free (tone);
   return status;
 }
 

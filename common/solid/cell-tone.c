@@ -5,69 +5,13 @@
  * down a vote whose stone's tone differs from its cell's mean as the
  * M-step left it (estep.c); cells then settle on one tone (spread
  * 0.88-0.94 x: now flatter than the truth's, whose stones also darken
- * towards their walls).
+ * towards their walls). The stones' tones come with their sections
+ * (cell-guide.c).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-/* Light components smaller than this are specks, not stone sections. */
-#define TONE_MIN_SECTION 4
-
-TsStatus
-ts_solid_stone_tones (const TsImage *ex, float **tone)
-{
-  size_t w = ex->width, count = w * ex->height;
-  float split = ts_solid_phase_split (ex);
-  size_t *stack = malloc (count * sizeof (size_t));
-  size_t *member = malloc (count * sizeof (size_t));
-  uint8_t *seen = calloc (count, 1);
-  float *out = malloc (count * sizeof (float));
-
-  *tone = NULL;
-  if (!stack || !member || !seen || !out)
-    {
-      free (stack);
-      free (member);
-      free (seen);
-      free (out);
-      return TS_ERROR_OUT_OF_MEMORY;
-    }
-  for (size_t i = 0; i < count; i++)
-    out[i] = NAN;
-  for (size_t i = 0; i < count; i++)
-    {
-      size_t top = 0, area = 0;
-      double sum = 0.0;
-      if (seen[i] || !(ex->pixels[i * TS_CHANNELS] > split))
-        continue;
-      seen[i] = 1;
-      stack[top++] = i;
-      while (top > 0)
-        {
-          size_t p = stack[--top], x = p % w, y = p / w;
-          size_t next[4] = { x > 0 ? p - 1 : p, x + 1 < w ? p + 1 : p,
-                             y > 0 ? p - w : p, y + 1 < ex->height ? p + w : p };
-          member[area++] = p;
-          sum += ex->pixels[p * TS_CHANNELS];
-          for (int k = 0; k < 4; k++)
-            if (!seen[next[k]] && ex->pixels[next[k] * TS_CHANNELS] > split)
-              {
-                seen[next[k]] = 1;
-                stack[top++] = next[k];
-              }
-        }
-      if (area >= TONE_MIN_SECTION)
-        for (size_t k = 0; k < area; k++)
-          out[member[k]] = (float) (sum / (double) area);
-    }
-  free (stack);
-  free (member);
-  free (seen);
-  *tone = out;
-  return TS_OK;
-}
 
 /* The first orientation with an exemplar: there is always one. */
 static const TsSolidView *

@@ -80,9 +80,11 @@ typedef struct
 
 /* Writes the exemplar's signed distances to its mortar into `working`'s
  * alpha (the coarser levels' code) and adds its sections and pixels to
- * `guide`. */
+ * `guide`. Each pixel of a stone section (a light 4-connected piece of
+ * at least 4 pixels) gets its section's mean lightness in *stone_tone
+ * (allocated), NAN elsewhere: what cell tones compare (cell-tone.c). */
 TsStatus ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide,
-                                       TsCancel *cancel);
+                                       float **stone_tone, TsCancel *cancel);
 /* Turns the finest exemplar level's alpha to the finest level's code. */
 void     ts_solid_cell_guide_finest (TsImage *finest);
 /* Draws the Voronoi seeds for a volume of edge `edge`, once the
@@ -103,10 +105,7 @@ void     ts_solid_cell_guide_free (TsSolidCellGuide *guide);
  * x the truth's). */
 #define TS_SOLID_TONE_WEIGHT 1.0f
 #define TS_SOLID_TONE_SPREAD 6.0f
-/* Each exemplar pixel of a stone section (a light 4-connected piece of
- * at least 4 pixels) gets its section's mean lightness in *tone
- * (allocated), NAN elsewhere. */
-TsStatus ts_solid_stone_tones (const TsImage *ex, float **tone);
+
 
 /* One slice orientation at one level. */
 typedef struct
@@ -122,7 +121,7 @@ typedef struct
                                            `chosen` (position-histogram.c), or NULL */
   float                 phase_split; /* lightness between its two phases (phase-split.c) */
   const float          *stone_tone;  /* finest level with the cell guide:
-                                        per pixel, see ts_solid_stone_tones */
+                                        per pixel, see ts_solid_cell_guide_exemplar */
 } TsSolidView;
 
 typedef struct

@@ -233,18 +233,14 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
       Exemplar *ex = &run->exemplar[e];
       TsStatus status = ts_image_to_working (ex->input, &ex->working);
       if (status == TS_OK && run->params->cell_structure)
-        status = ts_solid_cell_guide_exemplar (&ex->working, &run->cells, &run->midway);
+        status = ts_solid_cell_guide_exemplar (&ex->working, &run->cells, &ex->stone_tone,
+                                               &run->midway);
       if (status == TS_OK)
         status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
       if (status != TS_OK)
         return status;
       if (run->params->cell_structure)
-        {
-          ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
-          status = ts_solid_stone_tones (&ex->pyramid.level[0], &ex->stone_tone);
-          if (status != TS_OK)
-            return status;
-        }
+        ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
     }
   return run->params->cell_structure
            ? ts_solid_cell_guide_seed (&run->cells, run->params->size, run->params->seed)
