@@ -100,12 +100,11 @@ void     ts_solid_cell_guide_free (TsSolidCellGuide *guide);
 /* Cell tones (cell-tone.c), at the finest level with the cell guide: a
  * vote for a stone whose mean lightness lies z spreads (L* units) from
  * its cell's weighs 1 / (1 + weight z^2) (estep.c). 128^3 cells, seeds
- * 1-5: specks 1.24 -> 1.17 x the truth's, coherence 1.092 -> 1.080 x;
- * weight 4, or spread 3, took seed 5's coherence over the aim (1.16-1.17
- * x the truth's). */
+ * 1-5: specks 1.24 -> 1.17 x the truth's, coherence 1.092 -> 1.080 x.
+ * With spread 3, seed 5's coherence was 1.15, 1.16 and 1.17 x the
+ * truth's at weights 0.5, 1 and 4 (aim 1.15; 1.14 here). */
 #define TS_SOLID_TONE_WEIGHT 1.0f
 #define TS_SOLID_TONE_SPREAD 6.0f
-
 
 /* One slice orientation at one level. */
 typedef struct
