@@ -199,40 +199,22 @@ count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *sp
 }
 
 bool
-phase_specks (const TsImage *exemplar, const float *volume, size_t n, double *per_thousand)
+phase_figures (const TsImage *exemplar, const float *volume, size_t n, PhaseFigures *figures)
 {
-  size_t specks, sections;
-  Tones tones;
-  if (!count_phases (exemplar, volume, n, &specks, &sections, &tones))
-    return false;
-  *per_thousand = 1000.0 * (double) specks / (3.0 * (double) n * (double) n * (double) n);
-  return true;
-}
+  size_t specks, sections, their_specks, their_sections;
+  Tones tones, theirs;
+  bool square = exemplar->width == n && exemplar->height == n;
 
-bool
-phase_sections (const TsImage *exemplar, const float *volume, size_t n, double *ratio)
-{
-  size_t specks, ours, theirs;
-  Tones tones;
-  if (exemplar->width != n || exemplar->height != n
-      || !count_phases (exemplar, volume, n, &specks, &ours, &tones)
-      || !count_phases (exemplar, NULL, n, &specks, &theirs, &tones))
+  if (!count_phases (exemplar, volume, n, &specks, &sections, &tones)
+      || (square && !count_phases (exemplar, NULL, n, &their_specks, &their_sections, &theirs)))
     return false;
-  *ratio = theirs ? (double) ours / (3.0 * (double) n * (double) theirs) : NAN;
-  return true;
-}
-
-bool
-phase_tone_spread (const TsImage *exemplar, const float *volume, size_t n, double *ratio)
-{
-  size_t specks, sections;
-  Tones ours, theirs;
-  if (exemplar->width != n || exemplar->height != n
-      || !count_phases (exemplar, volume, n, &specks, &sections, &ours)
-      || !count_phases (exemplar, NULL, n, &specks, &sections, &theirs))
-    return false;
-  *ratio = ours.pixels && theirs.pixels && theirs.squares > 0.0
-             ? sqrt (ours.squares / (double) ours.pixels / (theirs.squares / (double) theirs.pixels))
-             : NAN;
+  figures->specks = 1000.0 * (double) specks / (3.0 * (double) n * (double) n * (double) n);
+  figures->sections = square && their_sections
+                        ? (double) sections / (3.0 * (double) n * (double) their_sections)
+                        : NAN;
+  figures->tones = square && tones.pixels && theirs.pixels && theirs.squares > 0.0
+                     ? sqrt (tones.squares / (double) tones.pixels
+                             / (theirs.squares / (double) theirs.pixels))
+                     : NAN;
   return true;
 }

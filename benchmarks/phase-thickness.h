@@ -1,7 +1,7 @@
-/* Two figures of a two-phase solid's slices (solid-shapes), the phases
- * split at the middle of the exemplar's 5th and 95th lightness
- * percentiles: how thick their bodies are against the exemplar's, and how
- * many specks they hold.
+/* Figures of a two-phase solid's slices (solid-shapes), the phases split
+ * at the middle of the exemplar's 5th and 95th lightness percentiles: how
+ * thick their bodies are against the exemplar's, how many specks they
+ * hold, how many sections and how even their tones.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #ifndef TS_PHASE_THICKNESS_H
 #define TS_PHASE_THICKNESS_H
@@ -24,23 +24,25 @@ bool phase_thickness (const TsImage *exemplar, const float *volume, size_t n, do
  * pixels, in a slice that wraps around. */
 #define PHASE_SPECK_PIXELS 4
 
-/* Specks per 1000 pixels over every x, y and z slice of `volume` (n^3
- * Lab + alpha, periodic), split by `exemplar`'s lightness. False if out
- * of memory. */
-bool phase_specks (const TsImage *exemplar, const float *volume, size_t n, double *per_thousand);
+/* The figures of every x, y and z slice of `volume` (n^3 Lab + alpha,
+ * periodic), its phases split by `exemplar`'s lightness, from one pass:
+ * - specks: specks per 1000 pixels;
+ * - sections: pieces of the light phase larger than a speck (stones
+ *   between mortar, spots on a dark ground), their number per slice over
+ *   the exemplar's own (n x n, wrapped): where stones merge or the mortar
+ *   fails to close it falls below 1, where they break into fragments it
+ *   rises;
+ * - tones: the lightness spread within those sections (root mean square
+ *   deviation from each section's own mean), over the exemplar's: where a
+ *   stone's section copies several exemplar stones of different tones it
+ *   rises, where stones are flatter than the exemplar's it falls.
+ * Sections and tones are NAN unless the exemplar is n x n. */
+typedef struct
+{
+  double specks, sections, tones;
+} PhaseFigures;
 
-/* Sections: pieces of the light phase larger than a speck (stones between
- * mortar, spots on a dark ground). Their number per slice over every x,
- * y and z slice of `volume`, over the exemplar's own (n x n, wrapped):
- * where stones merge or the mortar fails to close it falls below 1, where
- * they break into fragments it rises. False if out of memory or if the
- * exemplar is not n x n. */
-bool phase_sections (const TsImage *exemplar, const float *volume, size_t n, double *ratio);
-
-/* The lightness spread within sections (root mean square deviation from
- * each section's own mean) over every x, y and z slice of `volume`, over
- * the exemplar's: where a stone's section copies several exemplar stones
- * of different tones it rises. False as phase_sections. */
-bool phase_tone_spread (const TsImage *exemplar, const float *volume, size_t n, double *ratio);
+/* False if out of memory. */
+bool phase_figures (const TsImage *exemplar, const float *volume, size_t n, PhaseFigures *figures);
 
 #endif

@@ -87,28 +87,14 @@ interior_planes (const TsImage *exemplar, const float *volume, size_t n)
   return range;
 }
 
-/* phase_specks' figure, NAN if out of memory. */
-static double
-speck_figure (const TsImage *exemplar, const float *volume, size_t n)
+/* phase_figures', all NAN if out of memory. */
+static PhaseFigures
+phase_row (const TsImage *exemplar, const float *volume, size_t n)
 {
-  double per_thousand;
-  return phase_specks (exemplar, volume, n, &per_thousand) ? per_thousand : NAN;
-}
-
-/* phase_sections' ratio, NAN if out of memory. */
-static double
-section_figure (const TsImage *exemplar, const float *volume, size_t n)
-{
-  double ratio;
-  return phase_sections (exemplar, volume, n, &ratio) ? ratio : NAN;
-}
-
-/* phase_tone_spread's ratio, NAN if out of memory. */
-static double
-tone_figure (const TsImage *exemplar, const float *volume, size_t n)
-{
-  double ratio;
-  return phase_tone_spread (exemplar, volume, n, &ratio) ? ratio : NAN;
+  PhaseFigures figures = { NAN, NAN, NAN };
+  if (!phase_figures (exemplar, volume, n, &figures))
+    figures.specks = figures.sections = figures.tones = NAN;
+  return figures;
 }
 
 /* plane_step_lattice's ratio, NAN if out of memory. */
@@ -121,7 +107,7 @@ lattice (const float *volume, size_t n)
 
 static void
 print_row (const char *name, const char *what, const SliceFigures *f, double thick,
-           PlaneRange planes, double grid, double specks, double sections, double tones)
+           PlaneRange planes, double grid, PhaseFigures phases)
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
@@ -130,7 +116,7 @@ print_row (const char *name, const char *what, const SliceFigures *f, double thi
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
           f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi,
-          f->worst_slice_anisotropy, grid, specks, sections, tones);
+          f->worst_slice_anisotropy, grid, phases.specks, phases.sections, phases.tones);
 }
 
 /* The truth solid `name` drawn with another seed, measured against the
@@ -147,8 +133,7 @@ print_new_sample (const char *name, const TsImage *exemplar, size_t n, uint32_t 
     {
       phase_thickness (exemplar, sample, n, &thick);
       print_row (name, "sample", &f, thick, interior_planes (exemplar, sample, n), lattice (sample, n),
-                 speck_figure (exemplar, sample, n), section_figure (exemplar, sample, n),
-                 tone_figure (exemplar, sample, n));
+                 phase_row (exemplar, sample, n));
     }
   else
     fprintf (stderr, "solid-shapes: %s: could not render or measure a new sample\n", name);
@@ -326,8 +311,7 @@ main (int argc, char **argv)
                   thick = NAN;
                   phase_thickness (&exemplar, truth, n, &thick);
                   print_row (base, "truth", &f, thick, interior_planes (&exemplar, truth, n),
-                             lattice (truth, n), speck_figure (&exemplar, truth, n),
-                             section_figure (&exemplar, truth, n), tone_figure (&exemplar, truth, n));
+                             lattice (truth, n), phase_row (&exemplar, truth, n));
                   slice_cut (truth, n, 0, n / 2, &slice);
                   place (&strip, 1, &slice);
                 }
@@ -336,8 +320,7 @@ main (int argc, char **argv)
                   thick = NAN;
                   phase_thickness (&exemplar, ours, n, &thick);
                   print_row (base, "ours", &f, thick, interior_planes (&exemplar, ours, n),
-                             lattice (ours, n), speck_figure (&exemplar, ours, n),
-                             section_figure (&exemplar, ours, n), tone_figure (&exemplar, ours, n));
+                             lattice (ours, n), phase_row (&exemplar, ours, n));
                 }
               if (truth && new_sample && !print_new_sample (base, &exemplar, n, seed))
                 status = 1;

@@ -433,6 +433,8 @@ ts_solid_cell_guide_free (TsSolidCellGuide *g)
   free (g->seeds);
   free (g->cell_of);
   free (g->cell_tone);
+  free (g->tone_sum);
+  free (g->tone_count);
   free (g->bucket_start);
   free (g->order);
   free (g->field);

@@ -4,14 +4,15 @@
  * 1.03-1.10 x the exemplar's, the truth's 0.95-1.04). The E-step weighs
  * down a vote whose stone's tone differs from its cell's mean as the
  * M-step left it (estep.c); cells then settle on one tone (spread
- * 0.88-0.94 x: now flatter than the truth's, whose stones also darken
- * towards their walls). The stones' tones come with their sections
- * (cell-guide.c).
+ * 0.88-0.94 x: now flatter than the truth's, whose stones hold smooth
+ * blotches of 3D noise; README, stop 41). The stones' tones come with
+ * their sections (cell-guide.c).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* The first orientation with an exemplar: there is always one. */
 static const TsSolidView *
@@ -29,17 +30,19 @@ ts_solid_cell_tones (TsSolidCellGuide *g, TsSolidLevel *level)
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
   const float *value = level->value;
   float split = first_view (level)->phase_split;
-  double *sum = calloc (g->seed_count, sizeof (double));
-  uint32_t *count = calloc (g->seed_count, sizeof (uint32_t));
 
   if (!g->cell_tone)
-    g->cell_tone = malloc (g->seed_count * sizeof (float));
-  if (!sum || !count || !g->cell_tone)
     {
-      free (sum);
-      free (count);
-      return TS_ERROR_OUT_OF_MEMORY;
+      g->cell_tone = malloc (g->seed_count * sizeof (float));
+      g->tone_sum = malloc (g->seed_count * sizeof (double));
+      g->tone_count = malloc (g->seed_count * sizeof (uint32_t));
     }
+  if (!g->cell_tone || !g->tone_sum || !g->tone_count)
+    return TS_ERROR_OUT_OF_MEMORY;
+  double *sum = g->tone_sum;
+  uint32_t *count = g->tone_count;
+  memset (sum, 0, g->seed_count * sizeof (double));
+  memset (count, 0, g->seed_count * sizeof (uint32_t));
   /* In voxel order, so the sums are the same at any thread count. */
   for (size_t i = 0; i < voxels; i++)
     {
@@ -53,7 +56,5 @@ ts_solid_cell_tones (TsSolidCellGuide *g, TsSolidLevel *level)
   for (size_t c = 0; c < g->seed_count; c++)
     g->cell_tone[c] = count[c] ? (float) (sum[c] / count[c]) : NAN;
   level->cell_tone = g->cell_tone;
-  free (sum);
-  free (count);
   return TS_OK;
 }

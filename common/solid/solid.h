@@ -76,6 +76,8 @@ typedef struct
                                      nearest seed); NULL at the coarser */
   float    *cell_tone;            /* seed_count: the mean lightness of each
                                      cell's light voxels (cell-tone.c)  */
+  double   *tone_sum;             /* seed_count each: cell-tone.c's sums, */
+  uint32_t *tone_count;           /* kept from one iteration to the next */
 } TsSolidCellGuide;
 
 /* Writes the exemplar's signed distances to its mortar into `working`'s

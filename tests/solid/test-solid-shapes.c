@@ -57,7 +57,7 @@ measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
   float *ours = malloc (n * n * n * TS_CHANNELS * sizeof (float));
   TsImage exemplar = { n, n, NULL };
   SliceFigures t, o;
-  double truth_specks, our_specks, truth_tones, our_tones;
+  PhaseFigures truth_phases, our_phases;
   TsSolidParams params;
   TsError error;
   bool ok = false;
@@ -77,11 +77,8 @@ measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
   if (ts_synthesize_solid (&params, ex3, ours, NULL, NULL, &error) != TS_OK)
     CHECK (0, "%s, seed %u: %s", kind, seed, error.message);
   else if (!slice_figures (&exemplar, truth, n, &t) || !slice_figures (&exemplar, ours, n, &o)
-           || !phase_specks (&exemplar, truth, n, &truth_specks)
-           || !phase_specks (&exemplar, ours, n, &our_specks) || !(truth_specks > 0.0)
-           || !phase_sections (&exemplar, ours, n, &r->sections)
-           || !phase_tone_spread (&exemplar, truth, n, &truth_tones)
-           || !phase_tone_spread (&exemplar, ours, n, &our_tones))
+           || !phase_figures (&exemplar, truth, n, &truth_phases)
+           || !phase_figures (&exemplar, ours, n, &our_phases) || !(truth_phases.specks > 0.0))
     CHECK (0, "%s, seed %u: figures", kind, seed);
   else
     {
@@ -90,8 +87,10 @@ measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
       r->completeness = o.median_completeness / t.median_completeness;
       r->axis_edges = o.median_axis_edges;
       r->seam = o.seam;
-      r->specks = our_specks / truth_specks;
-      r->tones = our_tones / truth_tones;
+      r->specks = our_phases.specks / truth_phases.specks;
+      r->sections = our_phases.sections;
+      /* The exemplar's spread, the denominator of both, cancels. */
+      r->tones = our_phases.tones / truth_phases.tones;
       printf ("%-7s seed %u: ours / truth sharpness %.3f, coherence %.3f, completeness %.3f, "
               "specks %.2f, tones %.2f; axis-edges %.3f (truth %.3f), seam %.3f, sections %.2f\n",
               kind, seed, r->sharpness, r->coherence, r->completeness, r->specks, r->tones,
