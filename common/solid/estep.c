@@ -355,6 +355,8 @@ prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGri
       prefetch (level->source[a] + p, 1);
   if (level->chosen)
     prefetch (level->chosen + p, 1);
+  if (level->cell_tone)
+    prefetch (level->cell_of + p, 0);
   for (int axis = 0; axis < TS_SOLID_AXES; axis++)
     {
       int u, w;
