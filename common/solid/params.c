@@ -2,6 +2,7 @@
  * estimate checked before anything is allocated.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "texsynth.h"
+#include "solid.h"
 #include "engine/schedule.h"
 #include "engine/error.h"
 
@@ -85,6 +86,12 @@ validate_without_memory (const TsSolidParams *params, const TsImage *const exemp
   return TS_OK;
 }
 
+bool
+ts_solid_uses_positions (const TsSolidParams *params)
+{
+  return params->histogram_matching && !params->cell_structure;
+}
+
 static double
 estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], int threads)
 {
@@ -108,8 +115,9 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
    * values and sources. */
   bytes += n3 * (16.0 + 12.0 + 3.0 * 8.0 / 8.0 + 1.0);
   bytes += n3 / 8.0 * (16.0 + 12.0);
-  if (params->record_sources)
-    bytes += n3 * sizeof (TsSolidSource);
+  if (params->record_sources || ts_solid_uses_positions (params))
+    bytes += n3 * sizeof (TsSolidSource); /* the sources asked for or the
+                                              position histogram's own */
   if (params->cell_structure)
     bytes += n3 * (sizeof (float) + 3.0 + 4.0); /* the guide's distances, slants, cells */
   return bytes + 16.0 * 1024 * 1024;

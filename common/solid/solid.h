@@ -40,6 +40,11 @@ void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
  * 5th and 95th lightness percentiles. */
 float ts_solid_phase_split (const TsImage *ex);
 
+/* Whether the finest level weighs votes by the position histogram
+ * (position-histogram.c): with histogram matching, and not with the cell
+ * structure (synthesize.c, TS_SOLID_POSITION_WEIGHT). */
+bool ts_solid_uses_positions (const TsSolidParams *params);
+
 /* The cell structure guide (cell-guide.c). A signed distance d (pixels,
  * positive inside a cell) rides in the working alpha channel as
  * TS_ALPHA_SCALE + code (d): slope NEAR within KNEE pixels of a wall,

@@ -281,13 +281,25 @@ test_bad_arguments (void)
   CHECK (ts_synthesize_solid (&p, all, volume, NULL, NULL, &e) == TS_OK,
          "ts_synthesize_solid ignores record_sources: %s", e.message);
 
+  /* The position histogram keeps every voxel's source whether or not
+   * the caller records them; without it (no histogram matching, or the
+   * cell structure) recording adds them. */
   p.size = 128;
-  p.record_sources = false;
-  CHECK (ts_solid_estimate_memory (&p, all, &without, &e) == TS_OK, "estimate");
-  p.record_sources = true;
-  CHECK (ts_solid_estimate_memory (&p, all, &with, &e) == TS_OK, "estimate");
-  CHECK (with - without == cube (128) * sizeof (TsSolidSource),
-         "recording adds 4 bytes per voxel to the estimate (%zu -> %zu)", without, with);
+  for (int c = 0; c < 3; c++)
+    {
+      bool keeps = c == 0; /* histogram matching without the cell structure */
+      p.histogram_matching = c != 1;
+      p.cell_structure = c == 2;
+      p.record_sources = false;
+      CHECK (ts_solid_estimate_memory (&p, all, &without, &e) == TS_OK, "estimate: %s", e.message);
+      p.record_sources = true;
+      CHECK (ts_solid_estimate_memory (&p, all, &with, &e) == TS_OK, "estimate: %s", e.message);
+      CHECK (with - without == (keeps ? 0 : cube (128) * sizeof (TsSolidSource)),
+             "case %d: recording adds %zu bytes to the estimate (%zu -> %zu)", c, with - without,
+             without, with);
+    }
+  p.histogram_matching = true;
+  p.cell_structure = false;
 
   /* A map too small, or missing for an orientation that voxels copy. */
   for (size_t v = 0; v < cube (n); v++)
