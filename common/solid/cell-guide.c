@@ -222,7 +222,11 @@ ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed)
   guide->seeds = malloc (guide->seed_count * 3 * sizeof (float));
   guide->bucket_start = calloc (b3 + 1, sizeof (size_t));
   guide->order = malloc (guide->seed_count * sizeof (uint32_t));
-  if (!guide->seeds || !guide->bucket_start || !guide->order)
+  guide->cell_tone = malloc (guide->seed_count * sizeof (float));
+  guide->tone_sum = malloc (guide->seed_count * sizeof (double));
+  guide->tone_count = malloc (guide->seed_count * sizeof (uint32_t));
+  if (!guide->seeds || !guide->bucket_start || !guide->order || !guide->cell_tone || !guide->tone_sum
+      || !guide->tone_count)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t s = 0; s < guide->seed_count * 3; s++)
     guide->seeds[s] = (float) ((double) (ts_random (seed, 0, 0, s, 11) >> 11) * 0x1p-53 * (double) edge);

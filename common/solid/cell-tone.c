@@ -11,7 +11,6 @@
 #include "solid.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 /* The first orientation with an exemplar: there is always one. */
@@ -24,23 +23,15 @@ first_view (const TsSolidLevel *l)
   return &l->view[TS_SOLID_AXES - 1];
 }
 
-TsStatus
+void
 ts_solid_cell_tones (TsSolidCellGuide *g, TsSolidLevel *level)
 {
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
   const float *value = level->value;
   float split = first_view (level)->phase_split;
-
-  if (!g->cell_tone)
-    {
-      g->cell_tone = malloc (g->seed_count * sizeof (float));
-      g->tone_sum = malloc (g->seed_count * sizeof (double));
-      g->tone_count = malloc (g->seed_count * sizeof (uint32_t));
-    }
-  if (!g->cell_tone || !g->tone_sum || !g->tone_count)
-    return TS_ERROR_OUT_OF_MEMORY;
   double *sum = g->tone_sum;
   uint32_t *count = g->tone_count;
+
   memset (sum, 0, g->seed_count * sizeof (double));
   memset (count, 0, g->seed_count * sizeof (uint32_t));
   /* In voxel order, so the sums are the same at any thread count. */
@@ -56,5 +47,4 @@ ts_solid_cell_tones (TsSolidCellGuide *g, TsSolidLevel *level)
   for (size_t c = 0; c < g->seed_count; c++)
     g->cell_tone[c] = count[c] ? (float) (sum[c] / count[c]) : NAN;
   level->cell_tone = g->cell_tone;
-  return TS_OK;
 }

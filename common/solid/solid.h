@@ -82,7 +82,7 @@ typedef struct
   float    *cell_tone;            /* seed_count: the mean lightness of each
                                      cell's light voxels (cell-tone.c)  */
   double   *tone_sum;             /* seed_count each: cell-tone.c's sums, */
-  uint32_t *tone_count;           /* kept from one iteration to the next */
+  uint32_t *tone_count;           /* allocated with the seeds            */
 } TsSolidCellGuide;
 
 /* Writes the exemplar's signed distances to its mortar into `working`'s
@@ -151,7 +151,7 @@ typedef struct
 /* Each cell's mean lightness over its voxels in the light phase of the
  * level's first exemplar, into guide->cell_tone (NAN for a cell without
  * any), which level->cell_tone then points at. */
-TsStatus ts_solid_cell_tones (TsSolidCellGuide *guide, TsSolidLevel *level);
+void     ts_solid_cell_tones (TsSolidCellGuide *guide, TsSolidLevel *level);
 
 /* The first orientation whose view shows the same exemplar as `axis`'s:
  * per-exemplar data (histogram counts, excesses) is kept once, there. */

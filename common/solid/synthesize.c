@@ -416,7 +416,7 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
     assign_batches (batch_of, voxels, run->params->seed, stream);
   /* The cells' tones as the M-step left them, fixed for all batches. */
   if (status == TS_OK && l->cell_of)
-    status = ts_solid_cell_tones (&run->cells, l);
+    ts_solid_cell_tones (&run->cells, l);
   for (uint8_t b = 0; b < TS_SOLID_BATCHES && status == TS_OK; b++)
     {
       if (histogram)
