@@ -114,12 +114,14 @@ phase_thickness (const TsImage *exemplar, const float *volume, size_t n, double 
   return ok;
 }
 
-/* Lightness spread within light sections: squared deviations from
- * their own section's mean, and the pixels they sum over. */
+/* Lightness spread of light sections: squared deviations from their
+ * own section's mean, the pixels they sum over, and for the spread of
+ * the sections' means their lightness sum and sum of sum^2 / size. */
 typedef struct
 {
   double squares;
   size_t pixels;
+  double sum, mean_squares;
 } Tones;
 
 /* Specks of one wrapped slice's phase mask, and in *sections its pieces
@@ -161,6 +163,8 @@ count_specks (const uint8_t *mask, const float *pixels, size_t w, size_t h, uint
         {
           tones->squares += fmax (square - sum * sum / (double) size, 0.0);
           tones->pixels += size;
+          tones->sum += sum;
+          tones->mean_squares += sum * sum / (double) size;
         }
     }
   return specks;
@@ -179,7 +183,7 @@ count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *sp
   bool below, ok = slice.pixels && mask && seen && stack && split (exemplar, &threshold, &below);
 
   *specks = *sections = 0;
-  tones->squares = 0.0;
+  tones->squares = tones->sum = tones->mean_squares = 0.0;
   tones->pixels = 0;
   for (int axis = 0; ok && axis < (volume ? 3 : 1); axis++)
     for (size_t k = 0; k < (volume ? n : 1); k++)
@@ -196,6 +200,14 @@ count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *sp
   free (seen);
   free (stack);
   return ok;
+}
+
+/* The pixel-weighted variance of the light sections' mean lightness. */
+static double
+shade_variance (const Tones *t)
+{
+  double mean = t->sum / (double) t->pixels;
+  return fmax (t->mean_squares / (double) t->pixels - mean * mean, 0.0);
 }
 
 bool
@@ -216,5 +228,11 @@ phase_figures (const TsImage *exemplar, const float *volume, size_t n, PhaseFigu
                      ? sqrt (tones.squares / (double) tones.pixels
                              / (theirs.squares / (double) theirs.pixels))
                      : NAN;
+  figures->shades = NAN;
+  if (square && tones.pixels && theirs.pixels)
+    {
+      double ours = shade_variance (&tones), their = shade_variance (&theirs);
+      figures->shades = their > 0.0 ? sqrt (ours / their) : NAN;
+    }
   return true;
 }

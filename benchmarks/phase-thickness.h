@@ -35,11 +35,14 @@ bool phase_thickness (const TsImage *exemplar, const float *volume, size_t n, do
  * - tones: the lightness spread within those sections (root mean square
  *   deviation from each section's own mean), over the exemplar's: where a
  *   stone's section copies several exemplar stones of different tones it
- *   rises, where stones are flatter than the exemplar's it falls.
- * Sections and tones are NAN unless the exemplar is n x n. */
+ *   rises, where stones are flatter than the exemplar's it falls;
+ * - shades: the spread of those sections' mean lightness (pixel-weighted
+ *   root mean square deviation from the mean of all), over the
+ *   exemplar's: where stones take one middling tone each it falls.
+ * Sections, tones and shades are NAN unless the exemplar is n x n. */
 typedef struct
 {
-  double specks, sections, tones;
+  double specks, sections, tones, shades;
 } PhaseFigures;
 
 /* False if out of memory. */

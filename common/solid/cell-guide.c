@@ -181,6 +181,10 @@ ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide, float *
       guide->sections += sections;
       guide->area += count;
       guide->dark += dark;
+      status = ts_solid_cell_tone_exemplar (guide, tone, count);
+    }
+  if (status == TS_OK)
+    {
       *stone_tone = tone;
       tone = NULL;
     }
@@ -222,11 +226,8 @@ ts_solid_cell_guide_seed (TsSolidCellGuide *guide, size_t edge, uint32_t seed)
   guide->seeds = malloc (guide->seed_count * 3 * sizeof (float));
   guide->bucket_start = calloc (b3 + 1, sizeof (size_t));
   guide->order = malloc (guide->seed_count * sizeof (uint32_t));
-  guide->cell_tone = malloc (guide->seed_count * sizeof (float));
-  guide->tone_sum = malloc (guide->seed_count * sizeof (double));
-  guide->tone_count = malloc (guide->seed_count * sizeof (uint32_t));
-  if (!guide->seeds || !guide->bucket_start || !guide->order || !guide->cell_tone || !guide->tone_sum
-      || !guide->tone_count)
+  if (!guide->seeds || !guide->bucket_start || !guide->order
+      || ts_solid_cell_tone_alloc (guide) != TS_OK)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t s = 0; s < guide->seed_count * 3; s++)
     guide->seeds[s] = (float) ((double) (ts_random (seed, 0, 0, s, 11) >> 11) * 0x1p-53 * (double) edge);
@@ -439,6 +440,8 @@ ts_solid_cell_guide_free (TsSolidCellGuide *g)
   free (g->cell_tone);
   free (g->tone_sum);
   free (g->tone_count);
+  free (g->ranked);
+  free (g->shades);
   free (g->bucket_start);
   free (g->order);
   free (g->field);

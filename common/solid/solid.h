@@ -79,10 +79,15 @@ typedef struct
   size_t    field_edge;
   uint32_t *cell_of;              /* finest level: each voxel's cell (its
                                      nearest seed); NULL at the coarser */
-  float    *cell_tone;            /* seed_count: the mean lightness of each
-                                     cell's light voxels (cell-tone.c)  */
-  double   *tone_sum;             /* seed_count each: cell-tone.c's sums, */
-  uint32_t *tone_count;           /* allocated with the seeds            */
+  float    *cell_tone;            /* seed_count: each cell's tone, its
+                                     light voxels' mean lightness matched
+                                     to `shades` (cell-tone.c)          */
+  double   *tone_sum;             /* seed_count each: cell-tone.c's sums */
+  uint32_t *tone_count;           /* and ranking, allocated with the    */
+  struct TsSolidRankedCell *ranked; /* seeds                            */
+  float    *shades;               /* every exemplar stone pixel's section
+                                     tone, sorted once seeded           */
+  size_t    shade_count;
 } TsSolidCellGuide;
 
 /* Writes the exemplar's signed distances to its mortar into `working`'s
@@ -148,9 +153,17 @@ typedef struct
   const float  *cell_tone;  /* per cell, with cell_of (cell-tone.c)    */
 } TsSolidLevel;
 
-/* Each cell's mean lightness over its voxels in the light phase of the
- * level's first exemplar, into guide->cell_tone (NAN for a cell without
- * any), which level->cell_tone then points at. */
+/* Adds an exemplar's stone pixels' section tones (`stone_tone`, NAN off
+ * the stones) to guide->shades. */
+TsStatus ts_solid_cell_tone_exemplar (TsSolidCellGuide *guide, const float *stone_tone,
+                                      size_t pixels);
+/* Once the seeds are drawn: sorts the shades and allocates the per-cell
+ * tones, sums and ranking. */
+TsStatus ts_solid_cell_tone_alloc (TsSolidCellGuide *guide);
+/* Each cell's tone into guide->cell_tone (NAN for a cell without light
+ * voxels), which level->cell_tone then points at: its light voxels' mean
+ * lightness (light in the level's first exemplar), matched by rank to
+ * the shades. */
 void     ts_solid_cell_tones (TsSolidCellGuide *guide, TsSolidLevel *level);
 
 /* The first orientation whose view shows the same exemplar as `axis`'s:
