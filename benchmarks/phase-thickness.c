@@ -122,7 +122,28 @@ typedef struct
   double squares;
   size_t pixels;
   double sum, mean_squares;
+  double step[2];  /* |lightness step| summed over 4-neighbour pairs */
+  size_t pairs[2]; /* within the light [0] and the dark [1] phase   */
 } Tones;
+
+/* Adds one wrapped slice's lightness steps between 4-neighbours of the
+ * same phase. */
+static void
+count_steps (const uint8_t *mask, const float *pixels, size_t w, size_t h, Tones *tones)
+{
+  for (size_t y = 0; y < h; y++)
+    for (size_t x = 0; x < w; x++)
+      {
+        size_t i = y * w + x, next[2] = { y * w + (x + 1) % w, ((y + 1) % h) * w + x };
+        for (int k = 0; k < 2; k++)
+          if (mask[next[k]] == mask[i])
+            {
+              tones->step[mask[i]] += fabs ((double) pixels[i * TS_CHANNELS]
+                                            - pixels[next[k] * TS_CHANNELS]);
+              tones->pairs[mask[i]]++;
+            }
+      }
+}
 
 /* Specks of one wrapped slice's phase mask, and in *sections its pieces
  * of the light phase (mask 0) larger than a speck; `stack` holds w * h
@@ -183,8 +204,7 @@ count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *sp
   bool below, ok = slice.pixels && mask && seen && stack && split (exemplar, &threshold, &below);
 
   *specks = *sections = 0;
-  tones->squares = tones->sum = tones->mean_squares = 0.0;
-  tones->pixels = 0;
+  memset (tones, 0, sizeof *tones);
   for (int axis = 0; ok && axis < (volume ? 3 : 1); axis++)
     for (size_t k = 0; k < (volume ? n : 1); k++)
       {
@@ -194,6 +214,7 @@ count_phases (const TsImage *exemplar, const float *volume, size_t n, size_t *sp
         for (size_t i = 0; i < n * n; i++)
           mask[i] = cut->pixels[i * TS_CHANNELS] < threshold;
         *specks += count_specks (mask, cut->pixels, n, n, seen, stack, sections, tones);
+        count_steps (mask, cut->pixels, n, n, tones);
       }
   free (slice.pixels);
   free (mask);
@@ -228,11 +249,17 @@ phase_figures (const TsImage *exemplar, const float *volume, size_t n, PhaseFigu
                      ? sqrt (tones.squares / (double) tones.pixels
                              / (theirs.squares / (double) theirs.pixels))
                      : NAN;
+  for (int dark = 0; dark < 2; dark++)
+    figures->grain[dark] = square && tones.pairs[dark] && theirs.pairs[dark] && theirs.step[dark] > 0.0
+                             ? tones.step[dark] / (double) tones.pairs[dark]
+                                 / (theirs.step[dark] / (double) theirs.pairs[dark])
+                             : NAN;
   figures->shades = NAN;
   if (square && tones.pixels && theirs.pixels)
     {
       double ours = shade_variance (&tones), their = shade_variance (&theirs);
-      figures->shades = their > 0.0 ? sqrt (ours / their) : NAN;
+      /* Stones of one tone (blobs) leave only rounding: no spread. */
+      figures->shades = their > 0.01 ? sqrt (ours / their) : NAN;
     }
   return true;
 }

@@ -38,11 +38,16 @@ bool phase_thickness (const TsImage *exemplar, const float *volume, size_t n, do
  *   rises, where stones are flatter than the exemplar's it falls;
  * - shades: the spread of those sections' mean lightness (pixel-weighted
  *   root mean square deviation from the mean of all), over the
- *   exemplar's: where stones take one middling tone each it falls.
- * Sections, tones and shades are NAN unless the exemplar is n x n. */
+ *   exemplar's: where stones take one middling tone each it falls;
+ * - grain: the mean lightness step between 4-neighbours of the same
+ *   phase, over the exemplar's, in the light [0] and the dark [1] phase:
+ *   where neighbouring pixels copy unrelated sources it rises, in
+ *   stones as in joints.
+ * Sections, tones, shades and grain are NAN unless the exemplar is
+ * n x n. */
 typedef struct
 {
-  double specks, sections, tones, shades;
+  double specks, sections, tones, shades, grain[2];
 } PhaseFigures;
 
 /* False if out of memory. */

@@ -35,7 +35,7 @@ FIGURE = re.compile(r"^(\w+)\s+(truth|ours|sample)\s+coherence\s+([\d.]+) comple
                     r"sharpness ([\d.]+) axis-edges ([\d.]+) .* seam ([\d.]+) .* sharp-all ([\d.]+) "
                     r"thick ([\d.]+|nan) planes ([\d.]+|nan) ([\d.]+|nan) streaks ([\d.]+) "
                     r"grid ([\d.]+|nan) specks ([\d.]+|nan) sections ([\d.]+|nan) tones ([\d.]+|nan) "
-                    r"shades ([\d.]+|nan)$")
+                    r"shades ([\d.]+|nan) grain ([\d.]+|nan) ([\d.]+|nan)$")
 SYNTH = re.compile(r"^(\w+)\s+\d+\^3 synthesised in ([\d.]+) s")
 
 # name, how it is read from (ours, truth), test of a miss, mark
@@ -80,8 +80,8 @@ def run_seed(shapes, size, seed, kinds, new_sample, cell_structure):
             figures[(m.group(1), m.group(2))] = dict(zip(
                 ("coherence", "completeness", "sharpness", "axis", "seam", "sharp_all", "thick",
                  "planes_lo", "planes_hi", "streaks", "grid", "specks", "sections", "tones",
-                 "shades"),
-                map(float, m.group(3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17))))
+                 "shades", "grain_light", "grain_dark"),
+                map(float, m.group(*range(3, 20)))))
         m = SYNTH.match(line)
         if m:
             seconds[m.group(1)] = float(m.group(2))
@@ -156,7 +156,9 @@ def main():
                          f"grid {o['grid']:.2f}/{t['grid']:.2f} specks {specks[kind][-1]:.2f} "
                          f"sections {o['sections']:.2f}/{t['sections']:.2f} "
                          f"tones {o['tones']:.2f}/{t['tones']:.2f} "
-                         f"shades {o['shades']:.2f}/{t['shades']:.2f}] {sample}"
+                         f"shades {o['shades']:.2f}/{t['shades']:.2f} "
+                         f"grain {o['grain_light']:.2f}/{t['grain_light']:.2f} "
+                         f"{o['grain_dark']:.2f}/{t['grain_dark']:.2f}] {sample}"
                          f"({seconds.get(kind, 0):.1f} s)")
         print(f"seed {seed}: " + " | ".join(cells), flush=True)
     print("columns: sharpness coherence completeness axis-edges seam; "
@@ -169,7 +171,8 @@ def main():
           "light sections per slice over the exemplar's (phase-thickness.h); tones: ours/truth "
           "lightness spread within those sections over the exemplar's (phase-thickness.h); "
           "shades: ours/truth spread of those sections' mean lightness over the exemplar's "
-          "(phase-thickness.h); none is an aim]")
+          "(phase-thickness.h); grain: ours/truth lightness step between neighbours of the "
+          "same phase over the exemplar's, light then dark (phase-thickness.h); none is an aim]")
     for kind in kinds:
         means, worst = mean_and_worst(values, kind, len(args.seeds))
         all_mean = sum(sharp_all[kind]) / len(args.seeds)

@@ -93,9 +93,12 @@ interior_planes (const TsImage *exemplar, const float *volume, size_t n)
 static PhaseFigures
 phase_row (const TsImage *exemplar, const float *volume, size_t n)
 {
-  PhaseFigures figures = { NAN, NAN, NAN, NAN };
+  PhaseFigures figures = { NAN, NAN, NAN, NAN, { NAN, NAN } };
   if (!phase_figures (exemplar, volume, n, &figures))
-    figures.specks = figures.sections = figures.tones = figures.shades = NAN;
+    {
+      figures.specks = figures.sections = figures.tones = figures.shades = NAN;
+      figures.grain[0] = figures.grain[1] = NAN;
+    }
   return figures;
 }
 
@@ -113,13 +116,13 @@ print_row (const char *name, const char *what, const SliceFigures *f, double thi
 {
   printf ("%-9s %-6s coherence %6.3f completeness %6.3f sharpness %5.3f axis-edges %5.3f "
           "(x %.2f y %.2f z %.2f diag %.2f; worst %.3f) seam %5.3f sharp x %.2f y %.2f z %.2f d %.2f "
-          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f grid %.3f specks %.2f sections %.2f tones %.2f shades %.2f\n",
+          "sharp-all %.3f thick %.3f planes %.3f %.3f streaks %.3f grid %.3f specks %.2f sections %.2f tones %.2f shades %.2f grain %.2f %.2f\n",
           name, what, f->median_coherence, f->median_completeness, f->median_sharpness,
           f->median_axis_edges, f->axis_edges[0], f->axis_edges[1], f->axis_edges[2],
           f->axis_edges[3], f->worst_axis_edges, f->seam, f->sharpness[0], f->sharpness[1],
           f->sharpness[2], f->sharpness[3], f->all_slices_sharpness, thick, planes.lo, planes.hi,
           f->worst_slice_anisotropy, grid, phases.specks, phases.sections, phases.tones,
-          phases.shades);
+          phases.shades, phases.grain[0], phases.grain[1]);
 }
 
 /* The truth solid `name` drawn with another seed, measured against the
