@@ -108,6 +108,8 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
         bytes += (double) threads * ex * 4.0 + ex * 12.0; /* stamps, opaque, excesses */
         bytes += ex * (8.0 * 4.0 + 4.0 + 12.0 + 8.0); /* index: points, centres, nodes, build */
         bytes += ex * 8.0;                          /* variance map and its median */
+        if (params->cell_structure)
+          bytes += ex * 8.0;                        /* stone tones, sorted shades */
       }
   /* Finest level: the result volume (which holds the values), three
    * sources, the matches of three orientations on a grid of spacing 2 in
