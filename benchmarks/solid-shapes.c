@@ -28,7 +28,9 @@
  * sections over the exemplar's ("tones", phase-thickness.h): stones
  * pieced together from several of the exemplar's tones, and the spread
  * of the sections' mean lightness over the exemplar's ("shades"): stones
- * all of one middling tone where the exemplar's are light and dark. -i
+ * all of one middling tone where the exemplar's are light and dark, and
+ * the lightness step between neighbours of the same phase over the
+ * exemplar's ("grain", stones then joints): rough stones or joints. -i
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
