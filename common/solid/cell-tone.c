@@ -26,13 +26,6 @@ struct TsSolidRankedCell
   uint32_t cell;
 };
 
-static int
-by_shade (const void *a, const void *b)
-{
-  float x = *(const float *) a, y = *(const float *) b;
-  return (x > y) - (x < y);
-}
-
 /* By tone, then by cell: the same order at any thread count. */
 static int
 by_tone (const void *a, const void *b)
@@ -67,7 +60,7 @@ TsStatus
 ts_solid_cell_tone_alloc (TsSolidCellGuide *g)
 {
   if (g->shade_count)
-    qsort (g->shades, g->shade_count, sizeof (float), by_shade);
+    qsort (g->shades, g->shade_count, sizeof (float), ts_solid_compare_floats);
   g->cell_tone = malloc (g->seed_count * sizeof (float));
   g->tone_sum = malloc (g->seed_count * sizeof (double));
   g->tone_count = malloc (g->seed_count * sizeof (uint32_t));

@@ -199,6 +199,14 @@ ts_solid_same_pixel (const float *a, const float *b)
   return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
 }
 
+/* qsort's order of floats, ascending (variance-map.c, cell-tone.c). */
+static inline int
+ts_solid_compare_floats (const void *a, const void *b)
+{
+  float x = *(const float *) a, y = *(const float *) b;
+  return (x > y) - (x < y);
+}
+
 /* The in-slice axes (u, v) of the slices orthogonal to `axis`. */
 static inline void
 ts_solid_plane_axes (int axis, int *u, int *v)

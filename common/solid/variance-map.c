@@ -42,13 +42,6 @@ neighbourhood_variance (const TsImage *ex, size_t cx, size_t cy, size_t radius)
   return (float) ((squares - mean_squares / (double) count) / (double) count);
 }
 
-static int
-compare_float (const void *a, const void *b)
-{
-  float x = *(const float *) a, y = *(const float *) b;
-  return (x > y) - (x < y);
-}
-
 TsStatus
 ts_solid_variance_map_build (const TsImage *ex, size_t radius, bool coarse, TsSolidVarianceMap *map)
 {
@@ -76,7 +69,7 @@ ts_solid_variance_map_build (const TsImage *ex, size_t radius, bool coarse, TsSo
       for (size_t y = radius; y + radius < h; y++)
         for (size_t x = radius; x + radius < w; x++)
           sorted[inner++] = map->variance[y * w + x];
-      qsort (sorted, inner, sizeof (float), compare_float);
+      qsort (sorted, inner, sizeof (float), ts_solid_compare_floats);
       if (sorted[(inner - 1) / 2] > 0.0f)
         map->flat = TS_SOLID_COARSE_FLAT_FACTOR * sorted[(inner - 1) / 2];
       free (sorted);
