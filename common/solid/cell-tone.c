@@ -6,7 +6,8 @@
  * cells then settle on one tone.
  *
  * A cell's tone is its light voxels' mean lightness as the M-step left
- * it, matched by rank to the exemplar's stone tones: the cell of the
+ * it (above the joint split: a dark stone's cell has no voxel above the
+ * phase split, and went untoned, README stop 44), matched by rank to the exemplar's stone tones: the cell of the
  * q-th quantile (by light voxels) takes the tone of the q-th quantile of
  * the exemplar's stone pixels. The mean alone regresses to the middle,
  * since a cell's voxels first copy stones of many tones: the spread of
@@ -108,7 +109,7 @@ ts_solid_cell_tones (TsSolidCellGuide *g, TsSolidLevel *level)
 {
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
   const float *value = level->value;
-  float split = first_view (level)->phase_split;
+  float split = first_view (level)->joint_split;
   double *sum = g->tone_sum;
   uint32_t *count = g->tone_count;
 

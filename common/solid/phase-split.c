@@ -1,15 +1,25 @@
 /* The lightness between an exemplar's two phases (solid.h), for the
- * E-step's lone-voxel rule (estep.c). A histogram of lightness instead of
- * a sort: exemplars may hold millions of pixels, and this runs per level.
+ * E-step's lone-voxel rule (estep.c), and the lower one that bounds the
+ * joints for the cell guide (cell-guide.c). A histogram of lightness
+ * instead of a sort: exemplars may hold millions of pixels, and this
+ * runs per level.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 
 /* Bins per unit of CIE L (0-100). */
 #define TS_PHASE_BINS_PER_L 10
 #define TS_PHASE_BINS (100 * TS_PHASE_BINS_PER_L + 1)
+/* Where the joint split lies between the 5th and the 95th percentile.
+ * Midway, on 128^3 cells, it fell inside the stones' lightness (L* 36-77
+ * there, the mortar's 15-35): the darkest stones and the dark rims of
+ * the others counted as mortar, and the guide drew thick, grainy joints
+ * and no dark stones (README, stop 43). */
+#define TS_JOINT_SHARE 0.25f
 
-float
-ts_solid_phase_split (const TsImage *ex)
+/* The 5th and 95th lightness percentiles of the opaque pixels; false if
+ * there are none. */
+static bool
+percentiles (const TsImage *ex, float *low_out, float *high_out)
 {
   size_t count[TS_PHASE_BINS] = { 0 }, opaque = 0, below = 0;
   size_t pixels = ts_image_pixel_count (ex);
@@ -29,7 +39,7 @@ ts_solid_phase_split (const TsImage *ex)
       opaque++;
     }
   if (opaque == 0)
-    return 50.0f;
+    return false;
   for (size_t b = 0; b < TS_PHASE_BINS; b++)
     {
       below += count[b];
@@ -44,5 +54,21 @@ ts_solid_phase_split (const TsImage *ex)
           break;
         }
     }
-  return 0.5f * (low + high);
+  *low_out = low;
+  *high_out = high;
+  return true;
+}
+
+float
+ts_solid_phase_split (const TsImage *ex)
+{
+  float low, high;
+  return percentiles (ex, &low, &high) ? 0.5f * (low + high) : 50.0f;
+}
+
+float
+ts_solid_joint_split (const TsImage *ex)
+{
+  float low, high;
+  return percentiles (ex, &low, &high) ? low + TS_JOINT_SHARE * (high - low) : 25.0f;
 }

@@ -39,6 +39,10 @@ void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
  * (dark mortar and light stones, spots and ground): midway between the
  * 5th and 95th lightness percentiles. */
 float ts_solid_phase_split (const TsImage *ex);
+/* The lightness below which `ex`'s pixels are joints, for the cell
+ * structure: a quarter of the way from the 5th to the 95th percentile,
+ * below the darkest stones' lightness (phase-split.c). */
+float ts_solid_joint_split (const TsImage *ex);
 
 /* Whether the finest level weighs votes by the position histogram
  * (position-histogram.c): with histogram matching, and not with the cell
@@ -92,9 +96,10 @@ typedef struct
 
 /* Writes the exemplar's signed distances to its mortar into `working`'s
  * alpha (the coarser levels' code) and adds its sections and pixels to
- * `guide`. Each pixel of a stone section (a light 4-connected piece of
- * at least 4 pixels) gets its section's mean lightness in *stone_tone
- * (allocated), NAN elsewhere: what cell tones compare (cell-tone.c). */
+ * `guide`. Each pixel of a stone section (a 4-connected piece of at
+ * least 4 pixels above the joint split, less the joints' dark rims)
+ * gets its section's mean lightness in *stone_tone (allocated), NAN
+ * elsewhere: what cell tones compare (cell-tone.c). */
 TsStatus ts_solid_cell_guide_exemplar (TsImage *working, TsSolidCellGuide *guide,
                                        float **stone_tone, TsCancel *cancel);
 /* Turns the finest exemplar level's alpha to the finest level's code. */
@@ -131,6 +136,8 @@ typedef struct
   uint32_t             *position_count; /* copies per exemplar pixel in
                                            `chosen` (position-histogram.c), or NULL */
   float                 phase_split; /* lightness between its two phases (phase-split.c) */
+  float                 joint_split; /* with the cell structure, the joints' (phase-split.c);
+                                        else -INFINITY */
   const float          *stone_tone;  /* finest level with the cell guide:
                                         per pixel, see ts_solid_cell_guide_exemplar */
 } TsSolidView;
@@ -162,8 +169,8 @@ TsStatus ts_solid_cell_tone_exemplar (TsSolidCellGuide *guide, const float *ston
 TsStatus ts_solid_cell_tone_alloc (TsSolidCellGuide *guide);
 /* Each cell's tone into guide->cell_tone (NAN for a cell without light
  * voxels), which level->cell_tone then points at: its light voxels' mean
- * lightness (light in the level's first exemplar), matched by rank to
- * the shades. */
+ * lightness (above the joint split of the level's first exemplar),
+ * matched by rank to the shades. */
 void     ts_solid_cell_tones (TsSolidCellGuide *guide, TsSolidLevel *level);
 
 /* The first orientation whose view shows the same exemplar as `axis`'s:

@@ -65,6 +65,7 @@ typedef struct
   float          *excess;
   uint32_t       *position_count;
   float           phase_split;  /* of the current level (phase-split.c) */
+  float           joint_split;  /* of the current level, with the cell guide */
   float          *stone_tone;   /* finest level, with the cell guide */
   TsSolidIndex    index;      /* all neighbourhoods of the current pass */
   TsSolidVarianceMap variance; /* their colour variances                */
@@ -298,6 +299,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       if (ex->opaque_count == 0)
         return TS_ERROR_TRANSPARENT_EXEMPLAR;
       ex->phase_split = ts_solid_phase_split (img);
+      ex->joint_split = run->params->cell_structure ? ts_solid_joint_split (img) : -INFINITY;
     }
   if (level >= run->levels)
     return TS_OK;
@@ -315,6 +317,7 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       view->excess = run->params->histogram_matching ? ex->excess : NULL;
       view->position_count = ex->position_count;
       view->phase_split = ex->phase_split;
+      view->joint_split = ex->joint_split;
       view->stone_tone = level == 0 ? ex->stone_tone : NULL;
     }
   return TS_OK;

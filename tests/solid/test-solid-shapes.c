@@ -43,13 +43,15 @@ typedef struct
   double      shades;             /* spread of the sections' mean
                                      lightness, of the truth's, at least;
                                      0 = none                           */
+  double      thick;              /* the dark phase's thickness, of the
+                                     truth's, at least; 0 = none        */
 } Case;
 
 /* One seed's figures: ours over the truth's (sharpness, coherence,
  * completeness) and ours alone (axis-edges over the exemplar's, seam). */
 typedef struct
 {
-  double sharpness, coherence, completeness, axis_edges, seam, specks, sections, tones, shades;
+  double sharpness, coherence, completeness, axis_edges, seam, specks, sections, tones, shades, thick;
 } Ratios;
 
 static bool
@@ -61,6 +63,7 @@ measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
   TsImage exemplar = { n, n, NULL };
   SliceFigures t, o;
   PhaseFigures truth_phases, our_phases;
+  double truth_thick, our_thick;
   TsSolidParams params;
   TsError error;
   bool ok = false;
@@ -81,7 +84,9 @@ measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
     CHECK (0, "%s, seed %u: %s", kind, seed, error.message);
   else if (!slice_figures (&exemplar, truth, n, &t) || !slice_figures (&exemplar, ours, n, &o)
            || !phase_figures (&exemplar, truth, n, &truth_phases)
-           || !phase_figures (&exemplar, ours, n, &our_phases) || !(truth_phases.specks > 0.0))
+           || !phase_figures (&exemplar, ours, n, &our_phases) || !(truth_phases.specks > 0.0)
+           || !phase_thickness (&exemplar, truth, n, &truth_thick)
+           || !phase_thickness (&exemplar, ours, n, &our_thick))
     CHECK (0, "%s, seed %u: figures", kind, seed);
   else
     {
@@ -95,11 +100,12 @@ measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
       /* The exemplar's spread, the denominator of both, cancels. */
       r->tones = our_phases.tones / truth_phases.tones;
       r->shades = our_phases.shades / truth_phases.shades;
+      r->thick = our_thick / truth_thick;
       printf ("%-7s seed %u: ours / truth sharpness %.3f, coherence %.3f, completeness %.3f, "
-              "specks %.2f, tones %.2f, shades %.2f; axis-edges %.3f (truth %.3f), seam %.3f, "
-              "sections %.2f\n",
+              "specks %.2f, tones %.2f, shades %.2f, thick %.2f; axis-edges %.3f (truth %.3f), "
+              "seam %.3f, sections %.2f\n",
               kind, seed, r->sharpness, r->coherence, r->completeness, r->specks, r->tones,
-              r->shades, r->axis_edges, t.median_axis_edges, r->seam, r->sections);
+              r->shades, r->thick, r->axis_edges, t.median_axis_edges, r->seam, r->sections);
       ok = true;
     }
   free (truth);
@@ -114,7 +120,7 @@ measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
 static void
 test_kind (const Case *c)
 {
-  Ratios mean = { 0, 0, 0, 0, 0, 0, 0, 0, 0 }, r;
+  Ratios mean = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, r;
 
   for (uint32_t seed = 1; seed <= SEEDS; seed++)
     {
@@ -129,11 +135,13 @@ test_kind (const Case *c)
       mean.sections += r.sections / SEEDS;
       mean.tones += r.tones / SEEDS;
       mean.shades += r.shades / SEEDS;
+      mean.thick += r.thick / SEEDS;
     }
   printf ("%-7s%s mean of %d seeds: sharpness %.3f, coherence %.3f, completeness %.3f, specks %.2f, "
-          "tones %.2f, shades %.2f x the truth's; axis-edges %.3f, seam %.3f, sections %.2f\n",
+          "tones %.2f, shades %.2f, thick %.2f x the truth's; axis-edges %.3f, seam %.3f, "
+          "sections %.2f\n",
           c->kind, c->cell_structure ? " (cell structure)" : "", SEEDS, mean.sharpness,
-          mean.coherence, mean.completeness, mean.specks, mean.tones, mean.shades,
+          mean.coherence, mean.completeness, mean.specks, mean.tones, mean.shades, mean.thick,
           mean.axis_edges, mean.seam, mean.sections);
   CHECK (mean.axis_edges <= c->axis_edges, "%s: axis-edges %.3f <= %.2f", c->kind, mean.axis_edges,
          c->axis_edges);
@@ -154,6 +162,9 @@ test_kind (const Case *c)
   if (c->shades > 0.0)
     CHECK (mean.shades >= c->shades, "%s: shades %.2f >= %.2f x the truth's", c->kind,
            mean.shades, c->shades);
+  if (c->thick > 0.0)
+    CHECK (mean.thick >= c->thick, "%s: the dark phase's thickness %.2f >= %.2f x the truth's",
+           c->kind, mean.thick, c->thick);
 }
 
 /* The cell structure needs opaque exemplars (it carries its distances in
@@ -245,21 +256,26 @@ main (void)
      * grains 1.04 x the truth's; coherence 0.93, 1.06, 0.98 x; specks
      * 4.4, 1.5, 1.9 x (6.5, 2.1, 2.5 x without the E-step's lone-voxel
      * rule, which the specks bounds would catch). */
-    { "cells", 0.90, 1.15, 1.08, 5.5, false, 0.0, 0.0, 0.0 },
-    { "blobs", 0.90, 1.15, 1.08, 1.8, false, 0.0, 0.0, 0.0 },
-    { "grains", 0.90, 1.15, 1.08, 2.2, false, 0.0, 0.0, 0.0 },
-    /* With the cell structure, mean of seeds 1-3: sharpness 1.03,
-     * coherence 1.00, completeness 1.01, specks 1.4 x the truth's;
-     * axis-edges 1.015; light sections 0.89 x the exemplar's (the
+    { "cells", 0.90, 1.15, 1.08, 5.5, false, 0.0, 0.0, 0.0, 0.0 },
+    { "blobs", 0.90, 1.15, 1.08, 1.8, false, 0.0, 0.0, 0.0, 0.0 },
+    { "grains", 0.90, 1.15, 1.08, 2.2, false, 0.0, 0.0, 0.0, 0.0 },
+    /* With the cell structure, mean of seeds 1-3: sharpness 1.01,
+     * coherence 0.98, completeness 0.99, specks 2.95 x the truth's;
+     * axis-edges 1.048; light sections 0.86 x the exemplar's (the
      * truth's 0.95; without the guide 0.54: neighbouring stones merge
      * where the mortar does not close). With one slope of 3 at the
      * finest level (solid.h), specks were 4.3 x and sections 0.81, which
-     * these bounds catch. Lightness spread within sections 0.89 x the
+     * these bounds catch. Lightness spread within sections 0.88 x the
      * truth's (1.10 when cells pieced themselves from stones of several
-     * tones, before cell-tone.c). Spread of the stones' tones 0.98 x
+     * tones, before cell-tone.c). Spread of the stones' tones 0.94 x
      * the truth's (0.80 when each cell's tone was its voxels' mean, not
-     * matched to the exemplar's stone tones). */
-    { "cells", 0.90, 1.15, 1.08, 3.0, true, 0.86, 1.0, 0.90 },
+     * matched to the exemplar's stone tones). The dark phase 0.88 x as
+     * thick as the truth's: 0.76 x when the guide's joints ended at the
+     * phase split, in the darkest stones (phase-split.c), whose specks
+     * were 1.4 x and sections 0.89: the dark stones between the splits
+     * now hold specks where their texture crosses the phase split, as
+     * the truth's smooth ones seldom do (README, stop 44). */
+    { "cells", 0.90, 1.15, 1.08, 3.5, true, 0.82, 1.0, 0.90, 0.82 },
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
     test_kind (&cases[i]);
