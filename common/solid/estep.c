@@ -41,10 +41,10 @@
  * (phase-split.c) makes a third class, the joints below it: a vote is
  * then lone if its side of either split is none of its neighbours', and
  * yields to the heaviest vote of a class that is not. Why: the guide's
- * joints end at the joint split, and with the phase split alone, lone
- * voxels of the joints and of the dark stones between the splits stayed
- * (128^3 cells, seeds 1-2: specks 2.7-4.2 x the truth's; with three
- * classes 1.6-2.3 x, README stop 44).
+ * joints end at the joint split, and with the rule at that split alone,
+ * lone voxels of the dark stones between the splits stayed (128^3
+ * cells, seeds 1-2: specks 2.7-4.2 x the truth's; with three classes
+ * 1.6-2.3 x, README stop 44).
  *
  * Cell tones (the level's `cell_tone`, at the finest level with the
  * cell guide): a vote for an exemplar stone whose tone differs from the
