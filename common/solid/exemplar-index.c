@@ -25,6 +25,31 @@ ts_solid_index_free (TsSolidIndex *index)
   memset (index, 0, sizeof *index);
 }
 
+#if defined(__GNUC__)
+typedef float Lanes __attribute__ ((vector_size (4 * sizeof (float))));
+
+/* Four components per vector, each summed over the dimensions in order as
+ * the plain loop does, so the bits are the same. Left to itself, GCC
+ * vectorised across the dimensions instead and spent most of its time
+ * transposing: the projection was 14 % of a 128^3 run. */
+void
+ts_solid_index_project (const TsSolidIndex *index, const float *neighbourhood,
+                        float projected[TS_SOLID_INDEX_DIMS])
+{
+  enum { VECTORS = TS_SOLID_INDEX_DIMS / 4 };
+  Lanes acc[VECTORS];
+
+  memset (acc, 0, sizeof acc);
+  for (size_t d = 0; d < index->dims; d++)
+    {
+      Lanes row[VECTORS];
+      memcpy (row, index->basis + d * TS_SOLID_INDEX_DIMS, sizeof row);
+      for (size_t j = 0; j < VECTORS; j++)
+        acc[j] += neighbourhood[d] * row[j];
+    }
+  memcpy (projected, acc, sizeof acc);
+}
+#else
 void
 ts_solid_index_project (const TsSolidIndex *index, const float *neighbourhood,
                         float projected[TS_SOLID_INDEX_DIMS])
@@ -38,6 +63,7 @@ ts_solid_index_project (const TsSolidIndex *index, const float *neighbourhood,
     }
   memcpy (projected, acc, sizeof acc);
 }
+#endif
 
 static float
 coordinate (const TsSolidIndex *index, const uint32_t *order, size_t i, uint32_t dim)
