@@ -96,8 +96,8 @@ signed_distance (const TsImage *ex, const uint8_t *light, size_t i)
 }
 
 /* Light components of at least GUIDE_MIN_SECTION pixels (4-connected):
- * their number, how many of them are darker than `dark_below` on
- * average, and, if `tone` is given, each of their pixels' section's mean
+ * their number, if `dark_sections` is given how many of them are darker
+ * than `dark_below` on average, and, if `tone` is given, each of their pixels' section's mean
  * lightness in it (NAN elsewhere), which cell tones compare
  * (cell-tone.c). */
 static TsStatus
@@ -110,7 +110,8 @@ count_sections (const TsImage *ex, const uint8_t *light, float dark_below, size_
   size_t *member = malloc (count * sizeof (size_t));
 
   *sections = 0;
-  *dark_sections = 0;
+  if (dark_sections)
+    *dark_sections = 0;
   if (!seen || !stack || !member)
     {
       free (seen);
@@ -145,7 +146,8 @@ count_sections (const TsImage *ex, const uint8_t *light, float dark_below, size_
       if (area < GUIDE_MIN_SECTION)
         continue;
       (*sections)++;
-      *dark_sections += sum / (double) area < dark_below;
+      if (dark_sections)
+        *dark_sections += sum / (double) area < dark_below;
       for (size_t k = 0; tone && k < area; k++)
         tone[member[k]] = (float) (sum / (double) area);
     }
@@ -196,10 +198,11 @@ static TsStatus
 guide_phases (const TsImage *working, uint8_t *light, uint8_t *stone, size_t *sections, size_t *dark,
               float *tone)
 {
-  size_t count = ts_image_pixel_count (working), light_sections, all, dark_stones, ignored;
-  float joint = ts_solid_joint_split (working), split = ts_solid_phase_split (working);
+  size_t count = ts_image_pixel_count (working), light_sections, all, dark_stones;
+  float joint, split;
   TsStatus status;
 
+  ts_solid_splits (working, &split, &joint);
   *dark = 0;
   for (size_t i = 0; i < count; i++)
     {
@@ -208,7 +211,7 @@ guide_phases (const TsImage *working, uint8_t *light, uint8_t *stone, size_t *se
       *dark += !light[i];
       stone[i] = l > split;
     }
-  status = count_sections (working, stone, split, &light_sections, &ignored, NULL);
+  status = count_sections (working, stone, split, &light_sections, NULL, NULL);
   if (status != TS_OK)
     return status;
   /* `stone` now becomes the rimless stone mask. */

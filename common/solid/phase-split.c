@@ -59,16 +59,17 @@ percentiles (const TsImage *ex, float *low_out, float *high_out)
   return true;
 }
 
-float
-ts_solid_phase_split (const TsImage *ex)
+void
+ts_solid_splits (const TsImage *ex, float *phase, float *joint)
 {
   float low, high;
-  return percentiles (ex, &low, &high) ? 0.5f * (low + high) : 50.0f;
-}
 
-float
-ts_solid_joint_split (const TsImage *ex)
-{
-  float low, high;
-  return percentiles (ex, &low, &high) ? low + TS_JOINT_SHARE * (high - low) : 25.0f;
+  if (!percentiles (ex, &low, &high))
+    {
+      *phase = 50.0f;
+      *joint = 25.0f;
+      return;
+    }
+  *phase = 0.5f * (low + high);
+  *joint = low + TS_JOINT_SHARE * (high - low);
 }

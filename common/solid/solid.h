@@ -35,14 +35,13 @@ TsStatus ts_solid_variance_map_build (const TsImage *ex, size_t radius, bool coa
                                       TsSolidVarianceMap *map);
 void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
 
-/* The lightness that splits `ex`'s opaque pixels into its two phases
- * (dark mortar and light stones, spots and ground): midway between the
- * 5th and 95th lightness percentiles. */
-float ts_solid_phase_split (const TsImage *ex);
-/* The lightness below which `ex`'s pixels are joints, for the cell
- * structure: a quarter of the way from the 5th to the 95th percentile,
- * below the darkest stones' lightness (phase-split.c). */
-float ts_solid_joint_split (const TsImage *ex);
+/* From one pass over `ex`'s opaque pixels: `phase`, the lightness that
+ * splits them into their two phases (dark mortar and light stones, spots
+ * and ground), midway between the 5th and 95th lightness percentiles;
+ * and `joint`, below which pixels are joints for the cell structure, a
+ * quarter of the way from the 5th to the 95th percentile, below the
+ * darkest stones' lightness (phase-split.c). */
+void ts_solid_splits (const TsImage *ex, float *phase, float *joint);
 
 /* Whether the finest level weighs votes by the position histogram
  * (position-histogram.c): with histogram matching, and not with the cell

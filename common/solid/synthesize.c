@@ -298,8 +298,9 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
         }
       if (ex->opaque_count == 0)
         return TS_ERROR_TRANSPARENT_EXEMPLAR;
-      ex->phase_split = ts_solid_phase_split (img);
-      ex->joint_split = run->params->cell_structure ? ts_solid_joint_split (img) : -INFINITY;
+      ts_solid_splits (img, &ex->phase_split, &ex->joint_split);
+      if (!run->params->cell_structure)
+        ex->joint_split = -INFINITY;
     }
   if (level >= run->levels)
     return TS_OK;
