@@ -96,10 +96,10 @@ signed_distance (const TsImage *ex, const uint8_t *light, size_t i)
 }
 
 /* Light components of at least GUIDE_MIN_SECTION pixels (4-connected):
- * their number, if `dark_sections` is given how many of them are darker
- * than `dark_below` on average, and, if `tone` is given, each of their pixels' section's mean
- * lightness in it (NAN elsewhere), which cell tones compare
- * (cell-tone.c). */
+ * their number; if `dark_sections` is given, how many of them are
+ * darker than `dark_below` on average; and, if `tone` is given, each of
+ * their pixels' section's mean lightness in it (NAN elsewhere), which
+ * cell tones compare (cell-tone.c). */
 static TsStatus
 count_sections (const TsImage *ex, const uint8_t *light, float dark_below, size_t *sections,
                 size_t *dark_sections, float *tone)

@@ -48,7 +48,7 @@
  * stones held by one light face neighbour, so a light voxel with five
  * face neighbours in dark stones also counts as lone (1.7 and 2.7 x ->
  * 1.5 and 2.2 x; needing four took them to 1.2 and 1.7 x but merged
- * light sections, 0.86 -> 0.81 of the truth's, README stop 45).
+ * light sections, 0.86 -> 0.81 of the exemplar's, README stop 45).
  *
  * Cell tones (the level's `cell_tone`, at the finest level with the
  * cell guide): a vote for an exemplar stone whose tone differs from the
@@ -294,8 +294,8 @@ collect (Votes *v, const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxis
  * the joint or the phase split, none of its known face neighbours, and
  * at least TS_SOLID_LONE_KNOWN of them known. With the cell structure, a
  * light voxel with TS_SOLID_LONE_KNOWN neighbours in dark stones is lone
- * too: a light speck in a dark stone that pokes out of a light one by a
- * single face, or a two-voxel speck (see the top of this file). */
+ * too: it pokes into a dark stone by a single face, or is half of a
+ * two-voxel speck there (see the top of this file). */
 static bool
 lone (const TsSolidView *view, const Votes *v, int c)
 {
