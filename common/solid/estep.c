@@ -299,7 +299,7 @@ collect (Votes *v, const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxis
 static bool
 lone (const TsSolidView *view, const Votes *v, int c)
 {
-  int known = 0, by_joint = 0, by_phase = 0, in_dark_stone = 0;
+  int known = 0, by_joint = 0, by_phase = 0;
 
   for (int d = 0; d < TS_SOLID_AXES; d++)
     for (int side = 0; side < 2; side++)
@@ -309,9 +309,12 @@ lone (const TsSolidView *view, const Votes *v, int c)
           known++;
           by_joint += (l < view->joint_split) == (c == LONE_JOINT);
           by_phase += (l < view->phase_split) == (c != LONE_LIGHT);
-          in_dark_stone += l >= view->joint_split && l < view->phase_split;
         }
-  if (c == LONE_LIGHT && view->joint_split > -INFINITY && in_dark_stone >= TS_SOLID_LONE_KNOWN)
+  /* For a light voxel, by_joint counts the neighbours above the joint
+   * split and by_phase those above the (higher) phase split: the
+   * difference is those in dark stones. */
+  if (c == LONE_LIGHT && view->joint_split > -INFINITY
+      && by_joint - by_phase >= TS_SOLID_LONE_KNOWN)
     return true;
   return known >= TS_SOLID_LONE_KNOWN && (!by_joint || !by_phase);
 }
