@@ -46,9 +46,10 @@
  * cells, seeds 1-2: specks 2.7-4.2 x the truth's; with three classes
  * 1.6-2.3 x, README stop 44). Most specks left were light voxels in dark
  * stones held by one light face neighbour, so a light voxel with five
- * face neighbours in dark stones also counts as lone (1.7 and 2.7 x ->
- * 1.5 and 2.2 x; needing four took them to 1.2 and 1.7 x but merged
- * light sections, 0.86 -> 0.81 of the exemplar's, README stop 45).
+ * face neighbours below the phase split also counts as lone (1.7 and
+ * 2.7 x -> 1.0 and 1.6 x; counting only neighbours in dark stones, 1.5
+ * and 2.2 x, README stops 45-46; needing four of those merged light
+ * sections, 0.86 -> 0.81 of the exemplar's).
  *
  * Cell tones (the level's `cell_tone`, at the finest level with the
  * cell guide): a vote for an exemplar stone whose tone differs from the
@@ -293,9 +294,10 @@ collect (Votes *v, const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxis
 /* Whether a voxel of lightness class c would be lone: on its side of
  * the joint or the phase split, none of its known face neighbours, and
  * at least TS_SOLID_LONE_KNOWN of them known. With the cell structure, a
- * light voxel with TS_SOLID_LONE_KNOWN neighbours in dark stones is lone
- * too: it pokes into a dark stone by a single face, or is half of a
- * two-voxel speck there (see the top of this file). */
+ * light voxel with TS_SOLID_LONE_KNOWN neighbours below the phase split
+ * (in dark stones or joints) is lone too: it pokes into them by a single
+ * face, or is half of a two-voxel speck there (see the top of this
+ * file). */
 static bool
 lone (const TsSolidView *view, const Votes *v, int c)
 {
@@ -310,11 +312,9 @@ lone (const TsSolidView *view, const Votes *v, int c)
           by_joint += (l < view->joint_split) == (c == LONE_JOINT);
           by_phase += (l < view->phase_split) == (c != LONE_LIGHT);
         }
-  /* For a light voxel, by_joint counts the neighbours above the joint
-   * split and by_phase those above the (higher) phase split: the
-   * difference is those in dark stones. */
+  /* For a light voxel, by_phase counts its light neighbours. */
   if (c == LONE_LIGHT && view->joint_split > -INFINITY
-      && by_joint - by_phase >= TS_SOLID_LONE_KNOWN)
+      && known - by_phase >= TS_SOLID_LONE_KNOWN)
     return true;
   return known >= TS_SOLID_LONE_KNOWN && (!by_joint || !by_phase);
 }
