@@ -95,9 +95,8 @@ match_shades (TsSolidCellGuide *g)
     }
 }
 
-/* The first orientation with an exemplar: there is always one. */
-static const TsSolidView *
-first_view (const TsSolidLevel *l)
+const TsSolidView *
+ts_solid_first_view (const TsSolidLevel *l)
 {
   for (int a = 0; a < TS_SOLID_AXES - 1; a++)
     if (l->view[a].exemplar)
@@ -110,7 +109,7 @@ ts_solid_cell_tones (TsSolidCellGuide *g, TsSolidLevel *level)
 {
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
   const float *value = level->value;
-  float split = first_view (level)->joint_split;
+  float split = ts_solid_first_view (level)->joint_split;
   double *sum = g->tone_sum;
   uint32_t *count = g->tone_count;
 

@@ -315,6 +315,14 @@ void ts_solid_position_move (TsSolidLevel *level, TsSolidSource before, TsSolidS
  * times how much more often than uniformly the counts say it is copied. */
 void ts_solid_position_excess (TsSolidLevel *level);
 
+/* The first orientation with an exemplar: there is always one. */
+const TsSolidView *ts_solid_first_view (const TsSolidLevel *level);
+
+/* With the cell structure, after the finest level: each small
+ * face-connected piece on one side of the phase split copies a face
+ * neighbour on the other side (specks.c). */
+TsStatus ts_solid_remove_specks (TsSolidLevel *level);
+
 /* --- E-step ---------------------------------------------------------------- */
 
 /* Voxels whose `batch_of` entry equals `batch` become the vote of the

@@ -82,14 +82,12 @@ typedef struct
   Exemplar             exemplar[TS_SOLID_AXES];
   int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
   size_t               exemplars;
-  size_t               levels;      /* volume levels synthesised           */
-  size_t               ex_levels;   /* exemplar levels (>= levels): the
-                                       coarser ones only seed MRPM        */
+  size_t               levels;      /* volume levels synthesised */
+  size_t               ex_levels;   /* >= levels: the coarser only seed MRPM */
   TsSolidLevel         level, coarser;
   float               *volume;                     /* the caller's: finest values */
   TsSolidSource       *sources;                    /* the caller's, or NULL */
-  TsSolidSource       *own_sources; /* finest level's, when the caller's is NULL
-                                       and the position histogram needs them */
+  TsSolidSource       *own_sources; /* the position histogram's, if no caller's */
   TsSolidCellGuide     cells;       /* with params->cell_structure */
 } Run;
 
@@ -499,6 +497,8 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
       /* Credit the iterations convergence made unnecessary. */
       run->done += (double) (pass->max_iterations - it) * (double) voxels;
     }
+  if (status == TS_OK && level == 0 && run->params->cell_structure)
+    status = ts_solid_remove_specks (&run->level);
   free (batch_of);
   return status;
 }
