@@ -22,33 +22,24 @@
  * left are cuts through larger pieces. */
 #define TS_SOLID_SPECK_VOXELS 4
 
-enum
-{
-  UNSEEN,
-  SEEN,
-  SPECK
-};
-
-/* Face neighbour `k` (0..5) of voxel p, or SIZE_MAX past a non-periodic
- * border. */
+/* Face neighbour `k` (0..5) of voxel p, across the border as the E-step
+ * takes it (estep.c): mirrored there, a neighbour inside is found twice,
+ * which neither step below minds. */
 static size_t
 face_neighbour (const TsSolidLevel *level, size_t p, int k)
 {
   size_t n = level->n, xyz[3] = { p % n, p / n % n, p / n / n };
   int d = k / 2;
-  ptrdiff_t c = (ptrdiff_t) xyz[d] + (k & 1 ? 1 : -1);
 
-  if (!level->periodic && (c < 0 || c >= (ptrdiff_t) n))
-    return SIZE_MAX;
-  xyz[d] = ts_border_index (c, n, 1);
+  xyz[d] = ts_border_index ((ptrdiff_t) xyz[d] + (k & 1 ? 1 : -1), n, level->periodic);
   return (xyz[2] * n + xyz[1]) * n + xyz[0];
 }
 
-/* Marks p's piece SPECK if it has at most `max_voxels` voxels; else p
- * alone SEEN (a later start inside a large piece explores it again, at
- * most max_voxels + 1 voxels each time). */
+/* Marks p's piece in `speck` if it has at most `max_voxels` voxels. A
+ * later start inside a large piece explores it again, at most
+ * max_voxels + 1 voxels each time. */
 static void
-classify_piece (const TsSolidLevel *level, const uint8_t *light, uint8_t *mark, size_t p,
+classify_piece (const TsSolidLevel *level, const uint8_t *light, uint8_t *speck, size_t p,
                 size_t *piece, size_t max_voxels)
 {
   size_t count = 1;
@@ -59,18 +50,16 @@ classify_piece (const TsSolidLevel *level, const uint8_t *light, uint8_t *mark, 
       {
         size_t q = face_neighbour (level, piece[i], k);
         bool known = false;
-        if (q == SIZE_MAX || light[q] != light[p])
+        if (light[q] != light[p])
           continue;
         for (size_t j = 0; j < count && !known; j++)
           known = piece[j] == q;
         if (!known)
           piece[count++] = q;
       }
-  if (count > max_voxels)
-    mark[p] = SEEN;
-  else
+  if (count <= max_voxels)
     for (size_t i = 0; i < count; i++)
-      mark[piece[i]] = SPECK;
+      speck[piece[i]] = 1;
 }
 
 TsStatus
@@ -80,33 +69,33 @@ ts_solid_remove_specks (TsSolidLevel *level)
   /* With an exemplar per orientation, the first one's split, as for
    * the cells' tones (cell-tone.c). */
   float split = ts_solid_first_view (level)->phase_split;
-  uint8_t *light = malloc (voxels), *mark = calloc (voxels, 1);
+  uint8_t *light = malloc (voxels), *speck = calloc (voxels, 1);
   size_t *piece = malloc ((max_voxels + 1) * sizeof (size_t));
 
-  if (!light || !mark || !piece)
+  if (!light || !speck || !piece)
     {
       free (light);
-      free (mark);
+      free (speck);
       free (piece);
       return TS_ERROR_OUT_OF_MEMORY;
     }
   for (size_t p = 0; p < voxels; p++)
     light[p] = level->value[p * TS_CHANNELS] >= split;
   for (size_t p = 0; p < voxels; p++)
-    if (mark[p] == UNSEEN)
-      classify_piece (level, light, mark, p, piece, max_voxels);
+    if (!speck[p])
+      classify_piece (level, light, speck, p, piece, max_voxels);
   /* Only specks change and only other voxels are read: any order, any
    * thread count gives the same volume. */
 #pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
   for (ptrdiff_t i = 0; i < (ptrdiff_t) voxels; i++)
     {
       size_t p = (size_t) i;
-      if (mark[p] != SPECK)
+      if (!speck[p])
         continue;
       for (int k = 0; k < 6; k++)
         {
           size_t q = face_neighbour (level, p, k);
-          if (q == SIZE_MAX || light[q] == light[p] || mark[q] == SPECK)
+          if (light[q] == light[p] || speck[q])
             continue;
           memcpy (level->value + p * TS_CHANNELS, level->value + q * TS_CHANNELS,
                   TS_CHANNELS * sizeof (float));
@@ -119,7 +108,7 @@ ts_solid_remove_specks (TsSolidLevel *level)
         }
     }
   free (light);
-  free (mark);
+  free (speck);
   free (piece);
   return TS_OK;
 }
