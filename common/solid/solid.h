@@ -318,7 +318,7 @@ void ts_solid_position_excess (TsSolidLevel *level);
 /* The first orientation with an exemplar: there is always one. */
 const TsSolidView *ts_solid_first_view (const TsSolidLevel *level);
 
-/* With the cell structure, after the finest level: each small
+/* After the finest level: each small
  * face-connected piece on one side of the phase split copies a face
  * neighbour on the other side (specks.c). */
 TsStatus ts_solid_remove_specks (TsSolidLevel *level);

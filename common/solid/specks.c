@@ -1,4 +1,4 @@
-/* Specks: with the cell structure, once the finest level is done, each
+/* Specks: once the finest level is done, each
  * 3D piece of at most TS_SOLID_SPECK_VOXELS face-connected voxels on one
  * side of the phase split (phase-split.c) takes the values of a face
  * neighbour on the other side. Why: the E-step's lone-voxel rule
@@ -16,10 +16,11 @@
 #include <string.h>
 
 /* The benchmark's specks are slice pieces of at most 4 pixels
- * (benchmarks/phase-thickness.h). 128^3 cells, seeds 1 and 2: specks
- * 0.96 and 1.58 x the truth's without this pass; 0.82 and 1.21 x with
- * pieces up to 4 voxels; 0.81 and 1.19 x up to 16: the slices' specks
- * left are cuts through larger pieces. */
+ * (benchmarks/phase-thickness.h). 128^3 cells with the cell structure,
+ * seeds 1 and 2: specks 0.96 and 1.58 x the truth's without this pass;
+ * 0.82 and 1.21 x with pieces up to 4 voxels; 0.81 and 1.19 x up to 16:
+ * the slices' specks left are cuts through larger pieces. Default path,
+ * seeds 1-5: cells 4.26 -> 3.36 x, blobs 1.68 -> 1.42 x (README stop 48). */
 #define TS_SOLID_SPECK_VOXELS 4
 
 /* Face neighbour `k` (0..5) of voxel p, across the border as the E-step

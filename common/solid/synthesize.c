@@ -497,7 +497,7 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
       /* Credit the iterations convergence made unnecessary. */
       run->done += (double) (pass->max_iterations - it) * (double) voxels;
     }
-  if (status == TS_OK && level == 0 && run->params->cell_structure)
+  if (status == TS_OK && level == 0)
     status = ts_solid_remove_specks (&run->level);
   free (batch_of);
   return status;
