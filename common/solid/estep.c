@@ -61,7 +61,6 @@
  * volume lacks.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
-#include "engine/indexing.h"
 
 #include <math.h>
 #include <string.h>
@@ -176,14 +175,10 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
 static void
 face_neighbours (const TsSolidLevel *level, Votes *v)
 {
-  size_t n = level->n;
-
   for (int d = 0; d < TS_SOLID_AXES; d++)
     for (int side = 0; side < 2; side++)
       {
-        size_t q[3] = { v->xyz[0], v->xyz[1], v->xyz[2] }, qi;
-        q[d] = ts_border_index ((ptrdiff_t) q[d] + (side ? 1 : -1), n, level->periodic);
-        qi = (q[2] * n + q[1]) * n + q[0];
+        size_t qi = ts_solid_face_neighbour (level, v->xyz, d, side);
         v->face[d][side] = v->batch_of[qi] == v->batch ? NULL : level->value + qi * TS_CHANNELS;
       }
 }

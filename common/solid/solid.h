@@ -4,6 +4,7 @@
 #ifndef TS_SOLID_H
 #define TS_SOLID_H
 
+#include "engine/indexing.h"
 #include "engine/level.h"
 #include "exemplar-index.h"
 
@@ -225,6 +226,18 @@ static inline size_t
 ts_solid_stride (size_t n, int axis)
 {
   return axis == 0 ? 1 : (axis == 1 ? n : n * n);
+}
+
+/* The index of voxel xyz's face neighbour one step down (side 0) or up
+ * (side 1) along `axis`, wrapped or mirrored at the border as the level
+ * says: the E-step and the speck pass (specks.c) must see the same. */
+static inline size_t
+ts_solid_face_neighbour (const TsSolidLevel *level, const size_t xyz[3], int axis, int side)
+{
+  size_t n = level->n, q[3] = { xyz[0], xyz[1], xyz[2] };
+
+  q[axis] = ts_border_index ((ptrdiff_t) q[axis] + (side ? 1 : -1), n, level->periodic);
+  return (q[2] * n + q[1]) * n + q[0];
 }
 
 /* Slices along its own axis that an orientation searches in one

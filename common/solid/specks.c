@@ -10,7 +10,6 @@
  * so aligned maps stay aligned.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
-#include "engine/indexing.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -23,17 +22,15 @@
  * seeds 1-5: cells 4.26 -> 3.36 x, blobs 1.68 -> 1.42 x (README stop 48). */
 #define TS_SOLID_SPECK_VOXELS 4
 
-/* Face neighbour `k` (0..5) of voxel p, across the border as the E-step
- * takes it (estep.c): mirrored there, a neighbour inside is found twice,
+/* Face neighbour `k` (0..5) of voxel p, as the E-step sees it
+ * (solid.h): mirrored at the border, a neighbour inside is found twice,
  * which neither step below minds. */
 static size_t
 face_neighbour (const TsSolidLevel *level, size_t p, int k)
 {
   size_t n = level->n, xyz[3] = { p % n, p / n % n, p / n / n };
-  int d = k / 2;
 
-  xyz[d] = ts_border_index ((ptrdiff_t) xyz[d] + (k & 1 ? 1 : -1), n, level->periodic);
-  return (xyz[2] * n + xyz[1]) * n + xyz[0];
+  return ts_solid_face_neighbour (level, xyz, k / 2, k & 1);
 }
 
 /* Marks p's piece in `speck` if it has at most `max_voxels` voxels. A
