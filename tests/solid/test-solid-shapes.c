@@ -210,9 +210,11 @@ test_cell_structure_refuses_transparency (void)
 }
 
 /* A bundled real exemplar with no preferred edge orientation: without a
- * truth, the aims that need none (axis-edges, seam). */
+ * truth, the aims that need none (axis-edges, seam), and at most
+ * `streaks` of edge anisotropy in any slice (slice-figures.h), which
+ * axis-edges does not see when the streaks are diagonal. */
 static void
-test_isotropic (const char *name)
+test_isotropic (const char *name, double streaks)
 {
   size_t n = SIDE;
   float *ours = malloc (n * n * n * TS_CHANNELS * sizeof (float));
@@ -240,9 +242,12 @@ test_isotropic (const char *name)
          error.message);
   CHECK (slice_figures (&exemplar, ours, n, &o), "%s: figures", name);
   printf ("%-11s anisotropy %.3f, ours: axis-edges %.3f (worst slice %.3f), sharpness %.3f, "
-          "coherence %.3f, completeness %.3f, seam %.3f\n", name, anisotropy, o.median_axis_edges,
-          o.worst_axis_edges, o.median_sharpness, o.median_coherence, o.median_completeness, o.seam);
+          "coherence %.3f, completeness %.3f, seam %.3f, streaks %.3f\n", name, anisotropy,
+          o.median_axis_edges, o.worst_axis_edges, o.median_sharpness, o.median_coherence,
+          o.median_completeness, o.seam, o.worst_slice_anisotropy);
   CHECK (o.median_axis_edges <= 1.08, "%s: axis-edges %.3f <= 1.08", name, o.median_axis_edges);
+  CHECK (o.worst_slice_anisotropy <= streaks, "%s: streaks (the worst slice's edge anisotropy) %.3f <= %.2f",
+         name, o.worst_slice_anisotropy, streaks);
   CHECK (o.seam <= 1.10, "%s: seam %.3f <= 1.10", name, o.seam);
   free (exemplar.pixels);
   free (ours);
@@ -284,10 +289,12 @@ main (void)
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
     test_kind (&cases[i]);
-  /* At 64^3: axis-edges 0.951 and 0.995 (128^3, solid-shapes' central
-   * crops: 0.976, 1.029). */
+  /* At 64^3: axis-edges 1.055 and 1.040; streaks 0.127 and 0.263. Before
+   * the E-step's shear rule (estep.c) axis-edges were 0.948 and 0.995,
+   * and streaks 0.287 and 0.316 (java's a band of 45-degree streaks
+   * across its x slice, README stops 49-50): both bounds fail then. */
   test_cell_structure_refuses_transparency ();
-  test_isotropic ("java.png");
-  test_isotropic ("leopard.png");
+  test_isotropic ("java.png", 0.20);
+  test_isotropic ("leopard.png", 0.30);
   return test_finish ("test-solid-shapes");
 }
