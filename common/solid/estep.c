@@ -60,8 +60,8 @@
  * vote weighs 1 + shear times less for each of the two neighbours across
  * its slice that holds an exemplar pixel one step from the vote's source
  * (and not the source's own colour, which flat stone insides share with
- * every neighbour). Such a vote runs its copy on into
- * the next slice shifted by a pixel: V(x, y, z) = E(x, y + z) is a
+ * every neighbour). Such a vote runs its copy on into the next slice
+ * shifted by a pixel: V(x, y, z) = E(x, y + z) is a
  * perfect copy in every y and every z slice, so the two orientations'
  * near-perfect matches outweigh the poor ones of the x slices, where it
  * is a band of 45-degree streaks (java 64^3, seeds 1-3: the worst
@@ -134,6 +134,26 @@ typedef struct
   float        shear;     /* the level's shear */
 } Votes;
 
+/* Whether `value` is the exemplar pixel (dx, dy) from `source`; false
+ * off the exemplar. */
+static bool
+next_to_source (const TsImage *ex, int32_t source, int dx, int dy, const float *value)
+{
+  ptrdiff_t w = (ptrdiff_t) ex->width, h = (ptrdiff_t) ex->height;
+  ptrdiff_t x = source % w + dx, y = source / w + dy;
+
+  return x >= 0 && y >= 0 && x < w && y < h
+         && ts_solid_same_pixel (value, ex->pixels + (size_t) (y * w + x) * TS_CHANNELS);
+}
+
+/* Whether the voxel's face neighbours are read: by continuation, the
+ * lone-voxel rule or the shear rule. */
+static bool
+reads_face_neighbours (const TsSolidLevel *level)
+{
+  return level->continuation > 0.0f || level->no_lone_voxels || level->shear > 0.0f;
+}
+
 /* How many of the voxel's two neighbours across the slice of `axis`
  * hold the exemplar pixel one step from `source`, and not its colour: the
  * shear rule's count (see the top of this file). */
@@ -141,8 +161,6 @@ static int
 sheared (const Votes *v, const TsImage *ex, int axis, int32_t source)
 {
   static const int step[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
-  ptrdiff_t w = (ptrdiff_t) ex->width, h = (ptrdiff_t) ex->height;
-  ptrdiff_t sx = source % w, sy = source / w;
   const float *own = ex->pixels + (size_t) source * TS_CHANNELS;
   int count = 0;
 
@@ -152,15 +170,11 @@ sheared (const Votes *v, const TsImage *ex, int axis, int32_t source)
       if (!across || ts_solid_same_pixel (across, own))
         continue;
       for (int k = 0; k < 4; k++)
-        {
-          ptrdiff_t x = sx + step[k][0], y = sy + step[k][1];
-          if (x >= 0 && y >= 0 && x < w && y < h
-              && ts_solid_same_pixel (across, ex->pixels + (size_t) (y * w + x) * TS_CHANNELS))
-            {
-              count++;
-              break;
-            }
-        }
+        if (next_to_source (ex, source, step[k][0], step[k][1], across))
+          {
+            count++;
+            break;
+          }
     }
   return count;
 }
@@ -259,17 +273,10 @@ slice_neighbours (const Votes *v, int axis, Neighbour next[4])
 static int
 continued (const TsImage *ex, int32_t source, const Neighbour *next, size_t neighbours)
 {
-  ptrdiff_t w = (ptrdiff_t) ex->width, h = (ptrdiff_t) ex->height;
-  ptrdiff_t sx = source % w, sy = source / w;
   int count = 0;
 
   for (size_t k = 0; k < neighbours; k++)
-    {
-      ptrdiff_t x = sx + next[k].dx, y = sy + next[k].dy;
-      if (x >= 0 && y >= 0 && x < w && y < h
-          && ts_solid_same_pixel (next[k].value, ex->pixels + (size_t) (y * w + x) * TS_CHANNELS))
-        count++;
-    }
+    count += next_to_source (ex, source, next[k].dx, next[k].dy, next[k].value);
   return count;
 }
 
@@ -394,7 +401,7 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
   v->tone = level->cell_tone
               ? level->cell_tone[level->cell_of[(xyz[2] * level->n + xyz[1]) * level->n + xyz[0]]]
               : NAN;
-  if (level->continuation > 0.0f || level->no_lone_voxels || level->shear > 0.0f)
+  if (reads_face_neighbours (level))
     face_neighbours (level, v);
   v->weight = 0.0f;
   v->source = -1;
@@ -440,7 +447,7 @@ prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGri
   /* face_neighbours' lines, wrapped here whatever the border rule (a
    * wrong guess at a mirrored border only costs a miss): its
    * ts_border_index made the whole 128^3 run 1.5 s (6 %) slower. */
-  if (level->continuation > 0.0f || level->no_lone_voxels || level->shear > 0.0f)
+  if (reads_face_neighbours (level))
     for (int d = 1; d < TS_SOLID_AXES; d++)
       {
         size_t stride = ts_solid_stride (n, d), at = xyz[d] * stride;
