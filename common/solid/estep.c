@@ -56,19 +56,20 @@
  * voxel's cell's weighs less (cell-tone.c), so a cell copies stones of
  * one tone.
  *
- * Shear (the level's `shear`, without the cell structure, solid.h): a
- * vote weighs 1 + shear times less for each of the two neighbours across
- * its slice that holds an exemplar pixel one step from the vote's source
- * (and not the source's own colour, which flat stone insides share with
- * every neighbour). Such a vote runs its copy on into the next slice
- * shifted by a pixel: V(x, y, z) = E(x, y + z) is a
- * perfect copy in every y and every z slice, so the two orientations'
- * near-perfect matches outweigh the poor ones of the x slices, where it
- * is a band of 45-degree streaks (java 64^3, seeds 1-3: the worst
- * slice's edge anisotropy 0.29, 0.19, 0.29 against the exemplar's 0.04;
- * with the rule 0.13, 0.11, 0.20). Counting the source's own pixel too
- * (straight extrusion) raised the truth solids' specks (cells 3.5 ->
- * 4.1 x the truth's) by lowering every vote inside flat stones.
+ * Shear (the level's `shear`, at the finest levels, without the cell
+ * structure, solid.h): a vote weighs 1 + shear times less for each of
+ * the two neighbours across its slice that holds an exemplar pixel one
+ * step from the vote's source (and not the source's own colour, which
+ * flat stone insides share with every neighbour). Such a vote runs its
+ * copy on into the next slice shifted by a pixel: V(x, y, z) =
+ * E(x, y + z) is a perfect copy in every y and every z slice, so the
+ * two orientations' near-perfect matches outweigh the poor ones of the x
+ * slices, where it is a band of 45-degree streaks (java 64^3, seeds
+ * 1-3: the worst slice's edge anisotropy 0.29, 0.19, 0.29 against the
+ * exemplar's 0.04; with the rule 0.13, 0.11, 0.20). Counting the
+ * source's own pixel too (straight extrusion) raised the truth solids'
+ * specks (cells 3.5 -> 4.1 x the truth's) by lowering every vote inside
+ * flat stones.
  *
  * Histogram matching: Kopf et al.'s weight 1 / (1 + excess) lowers the
  * votes of over-represented colours, so a near-tie goes to the colour the

@@ -536,7 +536,7 @@ synthesize_level (Run *run, size_t level)
     return status;
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;
   run->level.no_lone_voxels = level == 0;
-  run->level.shear = run->params->cell_structure ? 0.0f : TS_SOLID_SHEAR;
+  run->level.shear = run->params->cell_structure || level >= TS_SOLID_SHEAR_LEVELS ? 0.0f : TS_SOLID_SHEAR;
   run->level.cell_of = run->cells.cell_of;
   run->level.cell_tone = NULL;
   for (size_t e = 0; e < run->exemplars; e++)
