@@ -135,6 +135,11 @@ typedef struct
   float        shear;     /* the level's shear */
 } Votes;
 
+/* Steps (dx, dy) to a pixel's four neighbours in the exemplar; a
+ * voxel's in-slice face neighbours -u, +u, -v, +v map onto them in this
+ * order (slice_neighbours). */
+static const int slice_step[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
+
 /* Whether `value` is the exemplar pixel (dx, dy) from `source`; false
  * off the exemplar. */
 static bool
@@ -161,7 +166,6 @@ reads_face_neighbours (const TsSolidLevel *level)
 static int
 sheared (const Votes *v, const TsImage *ex, int axis, int32_t source)
 {
-  static const int step[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
   const float *own = ex->pixels + (size_t) source * TS_CHANNELS;
   int count = 0;
 
@@ -171,7 +175,7 @@ sheared (const Votes *v, const TsImage *ex, int axis, int32_t source)
       if (!across || ts_solid_same_pixel (across, own))
         continue;
       for (int k = 0; k < 4; k++)
-        if (next_to_source (ex, source, step[k][0], step[k][1], across))
+        if (next_to_source (ex, source, slice_step[k][0], slice_step[k][1], across))
           {
             count++;
             break;
@@ -251,7 +255,6 @@ face_neighbours (const TsSolidLevel *level, Votes *v)
 static size_t
 slice_neighbours (const Votes *v, int axis, Neighbour next[4])
 {
-  static const int step[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
   size_t count = 0;
   int u, w;
 
@@ -262,8 +265,8 @@ slice_neighbours (const Votes *v, int axis, Neighbour next[4])
       if (!value)
         continue;
       next[count].value = value;
-      next[count].dx = step[k][0];
-      next[count].dy = step[k][1];
+      next[count].dx = slice_step[k][0];
+      next[count].dy = slice_step[k][1];
       count++;
     }
   return count;
