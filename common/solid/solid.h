@@ -286,6 +286,13 @@ ts_solid_match_index (size_t cu, size_t cv, size_t t, size_t ju, size_t jv)
   return (t / TS_SOLID_SLICE_SPACING * cv + jv) * cu + ju;
 }
 
+/* The passes of volume level `level` of `levels`, of edge n (plan.c):
+ * the 2D schedule for the smallest exemplar's ex_w x ex_h at that
+ * level, with the solid engine's neighbourhood sizes, iterations and
+ * spacings. */
+void ts_solid_plan_level (const TsSolidParams *sp, size_t level, size_t levels, size_t n,
+                          size_t ex_w, size_t ex_h, TsLevelPlan *plan);
+
 /* M-step of one orientation: the best exemplar neighbourhood for the
  * slice neighbourhood of every centre (the slices t = t_offset modulo
  * TS_SOLID_SLICE_SPACING, sparse grid gu x gv within them), among the

@@ -16,27 +16,6 @@
 #define TS_SOLID_CONVERGED_FRACTION 0.002
 /* The coarsest volume level keeps at least this edge where it can. */
 #define TS_SOLID_COARSEST_EDGE 16
-/* Default neighbourhood sides: large first, then small. */
-#define TS_SOLID_PATCH 9
-#define TS_SOLID_FINE_PATCH 5
-/* Finest level's iterations per pass (2D: 2); the third brings 128^3
- * cells' completeness from 1.17x to 1.13x the truth's, the fourth
- * brings their coherence back under 1.15x the truth's with the position
- * histogram (1.16-1.17x with 3 iterations). */
-#define TS_SOLID_FINEST_ITERATIONS 4
-/* ...but 8 for its small-neighbourhood pass, the one that closes the
- * mortar around 128^3 cells' stones: with it the middle levels need only
- * 2 iterations per pass, and fewer middle iterations are what keeps
- * blobs' spots from merging (128^3, seeds 1-5: blobs' sharpness mean
- * 0.89 -> 0.92 x the truth's, cells' coherence 1.13 -> 1.12 x; 14 ->
- * 18 s). */
-#define TS_SOLID_FINEST_SMALL_ITERATIONS 8
-/* Iterations per pass of the levels between the coarsest and the finest
- * (2D: 3). Each one merges more of 128^3 blobs' spots. While the finest
- * small pass ran 4, the cells needed 4 here to settle their stone layout
- * (3 took their coherence to 1.16 x the truth's); now the finest level
- * settles it, and only 1 here unsettles it again (mean 1.14 x). */
-#define TS_SOLID_MIDDLE_ITERATIONS 2
 /* E-step weight per neighbour a vote continues (estep.c), at the finest
  * level: 1 takes 128^3 cells' sharpness 0.90 -> 0.92 and cleans their
  * mortar of lone voxels; 2 and 4 blunt blobs (0.90 and 0.89, below 0.9 x
@@ -121,37 +100,19 @@ cube (size_t n)
   return n * n * n;
 }
 
-/* The 2D schedule with solid defaults: the same neighbourhood fitting,
- * candidate counts and iteration counts per level, but for the finest. */
+/* The solid schedule (plan.c) for the smallest exemplar at `level`. */
 static void
 plan_level (const Run *run, size_t level, TsLevelPlan *plan)
 {
-  const TsSolidParams *sp = run->params;
-  size_t ex_w = SIZE_MAX, ex_h = SIZE_MAX, n = level_edge (sp->size, level);
-  TsParams p;
+  size_t ex_w = SIZE_MAX, ex_h = SIZE_MAX, n = level_edge (run->params->size, level);
 
-  ts_params_init (&p);
-  p.quality = sp->quality;
-  p.max_iterations = sp->max_iterations;
-  p.patch_size = sp->patch_size ? sp->patch_size : TS_SOLID_PATCH;
-  p.fine_patch_size = p.patch_size < TS_SOLID_FINE_PATCH ? p.patch_size : TS_SOLID_FINE_PATCH;
-  p.wrap_x = p.wrap_y = sp->periodic;
   for (size_t e = 0; e < run->exemplars; e++)
     {
       const TsImage *ex = &run->exemplar[e].pyramid.level[level];
       ex_w = ex->width < ex_w ? ex->width : ex_w;
       ex_h = ex->height < ex_h ? ex->height : ex_h;
     }
-  /* A neighbourhood no wider than the volume level itself. */
-  ex_w = ex_w < n + 4 ? ex_w : n + 4;
-  ts_schedule_level (&p, level, run->levels, ex_w, ex_h, plan);
-  if (level == 0 && !sp->max_iterations && run->levels > 1)
-    for (size_t i = 0; i < plan->passes; i++)
-      plan->pass[i].max_iterations = i > 0 ? TS_SOLID_FINEST_SMALL_ITERATIONS
-                                           : TS_SOLID_FINEST_ITERATIONS;
-  if (level > 0 && level + 1 < run->levels && !sp->max_iterations)
-    for (size_t i = 0; i < plan->passes; i++)
-      plan->pass[i].max_iterations = TS_SOLID_MIDDLE_ITERATIONS;
+  ts_solid_plan_level (run->params, level, run->levels, n, ex_w, ex_h, plan);
 }
 
 static double
