@@ -14,9 +14,9 @@
  * of 30 in that pass's E-step and the M-step searches 4/9 as many
  * centres: 128^3 took 22-27 s instead of 30-33, with the truth solids'
  * figures within their seed-to-seed spread (README stop 52). At 64^3,
- * a run of a few seconds whose truth features span half as many voxels,
- * it blunted the cells (sharpness 0.909 -> 0.896 x the truth's, below
- * test-solid-shapes' 0.90), so smaller volumes keep 2. */
+ * a run of a few seconds, it blunted the cells (sharpness 0.909 ->
+ * 0.896 x the truth's, below test-solid-shapes' 0.90), so smaller
+ * volumes keep 2. */
 #define TS_SOLID_FINEST_SPACING 3
 #define TS_SOLID_SPARSE_EDGE 128
 /* Finest level's iterations per pass (2D: 2); the third brings 128^3
