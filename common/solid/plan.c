@@ -50,24 +50,19 @@ ts_solid_plan_level (const TsSolidParams *sp, size_t level, size_t levels, size_
   ts_params_init (&p);
   p.quality = sp->quality;
   p.max_iterations = sp->max_iterations;
-  p.patch_size = sp->patch_size ? sp->patch_size : TS_SOLID_PATCH;
+  /* With the automatic neighbourhood sizes the middle levels run only
+   * the small ones (one pass): their large pass merged 128^3 blobs'
+   * spots into fewer, thicker bodies (seeds 1-4: blobs' sharpness mean
+   * 0.90 -> 0.94 x the truth's, cells' coherence 1.10 -> 1.11 x; aims
+   * missed 2 -> 1 of 50). At stop 23, with 4 middle iterations per
+   * pass, it unsettled the cells; the finest level has since taken
+   * their layout over (README stop 53). A 64^3 volume from a 64^2
+   * exemplar, as in the tests, has no middle level. */
+  p.patch_size = sp->patch_size ? sp->patch_size : (middle ? TS_SOLID_FINE_PATCH : TS_SOLID_PATCH);
   p.fine_patch_size = p.patch_size < TS_SOLID_FINE_PATCH ? p.patch_size : TS_SOLID_FINE_PATCH;
   p.wrap_x = p.wrap_y = sp->periodic;
   /* A neighbourhood no wider than the volume level itself. */
   ts_schedule_level (&p, level, levels, ex_w < n + 4 ? ex_w : n + 4, ex_h, plan);
-  /* With the automatic neighbourhood sizes the middle levels run only
-   * the small ones: their large pass merged 128^3 blobs' spots into
-   * fewer, thicker bodies (seeds 1-4: blobs' sharpness mean 0.90 ->
-   * 0.94 x the truth's, cells' coherence 1.10 -> 1.11 x; aims missed 2
-   * -> 1 of 50). At stop 23, with 4 middle iterations per pass, it
-   * unsettled the cells; the finest level has since taken their layout
-   * over (README stop 53). A 64^3 volume from a 64^2 exemplar, as in
-   * the tests, has no middle level. */
-  if (middle && !sp->patch_size && plan->passes > 1)
-    {
-      plan->pass[0] = plan->pass[plan->passes - 1];
-      plan->passes = 1;
-    }
   for (size_t i = 0; i < plan->passes; i++)
     {
       TsPass *pass = &plan->pass[i];
