@@ -254,7 +254,11 @@ void     ts_solid_params_init (TsSolidParams *params);
 
 /* `exemplars[a]` is the exemplar of the slices orthogonal to axis a, or
  * NULL to leave that orientation free; at least two must be given (the
- * same image may be passed for all three). */
+ * same image may be passed for all three). One image passed for all
+ * three whose lines mostly fall diagonally (left-top to right-bottom) is
+ * read mirrored left to right by the slices orthogonal to x: only then
+ * can its lines be sheets that every slice shows. Sources still name its
+ * own pixels. */
 TsStatus ts_solid_params_validate (const TsSolidParams *params,
                                    const TsImage *const exemplars[3],
                                    TsError *error);

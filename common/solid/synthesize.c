@@ -36,7 +36,7 @@
 typedef struct
 {
   const TsImage  *input;
-  TsImage         working;
+  TsImage         working;      /* mirrored for run->mirrored_axis */
   TsPyramid       pyramid;
   TsCandidateSet  candidates, coarser_candidates;
   int32_t        *opaque;
@@ -61,6 +61,7 @@ typedef struct
   Exemplar             exemplar[TS_SOLID_AXES];
   int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
   size_t               exemplars;
+  int                  mirrored_axis; /* reads its exemplar mirrored, or -1 */
   size_t               levels;      /* volume levels synthesised */
   size_t               ex_levels;   /* >= levels: the coarser only seed MRPM */
   TsSolidLevel         level, coarser;
@@ -164,11 +165,39 @@ run_free (Run *run)
     }
 }
 
+/* With one image on all three orientations, a mirrored copy for
+ * TS_SOLID_MIRRORED_AXIS if the image's lines fall (handedness.c). */
+static TsStatus
+choose_handedness (Run *run)
+{
+  const TsImage *shared = &run->exemplar[0].working;
+  Exemplar *copy = &run->exemplar[1];
+  TsStatus status;
+
+  run->mirrored_axis = -1;
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    if (run->exemplar_of[a] != 0)
+      return TS_OK;
+  if (ts_solid_diagonal_bias (shared) > -TS_SOLID_MIRROR_BIAS)
+    return TS_OK;
+  status = ts_image_alloc (&copy->working, shared->width, shared->height);
+  if (status != TS_OK)
+    return status;
+  memcpy (copy->working.pixels, shared->pixels,
+          ts_image_pixel_count (shared) * TS_CHANNELS * sizeof (float));
+  ts_solid_mirror_image (&copy->working);
+  copy->input = run->exemplar[0].input;
+  run->exemplar_of[TS_SOLID_MIRRORED_AXIS] = (int) run->exemplars++;
+  run->mirrored_axis = TS_SOLID_MIRRORED_AXIS;
+  return TS_OK;
+}
+
 /* Working pyramids of the distinct exemplars, all with the same depth. */
 static TsStatus
 prepare_exemplars (Run *run, const TsImage *const exemplars[3])
 {
   size_t levels = SIZE_MAX;
+  TsStatus status = TS_OK;
 
   for (int a = 0; a < TS_SOLID_AXES; a++)
     {
@@ -193,20 +222,23 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
   while (levels > 1 && level_edge (run->params->size, levels - 1) < TS_SOLID_COARSEST_EDGE)
     levels--;
   run->levels = levels;
-  for (size_t e = 0; e < run->exemplars; e++)
+  for (size_t e = 0; e < run->exemplars && status == TS_OK; e++)
+    status = ts_image_to_working (run->exemplar[e].input, &run->exemplar[e].working);
+  if (status == TS_OK)
+    status = choose_handedness (run);
+  for (size_t e = 0; e < run->exemplars && status == TS_OK; e++)
     {
       Exemplar *ex = &run->exemplar[e];
-      TsStatus status = ts_image_to_working (ex->input, &ex->working);
-      if (status == TS_OK && run->params->cell_structure)
+      if (run->params->cell_structure)
         status = ts_solid_cell_guide_exemplar (&ex->working, &run->cells, &ex->stone_tone,
                                                &run->midway);
       if (status == TS_OK)
         status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
-      if (status != TS_OK)
-        return status;
-      if (run->params->cell_structure)
+      if (status == TS_OK && run->params->cell_structure)
         ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
     }
+  if (status != TS_OK)
+    return status;
   return run->params->cell_structure
            ? ts_solid_cell_guide_seed (&run->cells, run->params->size, run->params->seed)
            : TS_OK;
@@ -545,6 +577,9 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
       for (size_t l = run.levels; l-- > 0 && status == TS_OK;)
         status = synthesize_level (&run, l);
     }
+  if (status == TS_OK && sources && run.mirrored_axis >= 0)
+    ts_solid_unmirror_sources (sources, cube (params->size), run.mirrored_axis,
+                               run.exemplar[run.exemplar_of[run.mirrored_axis]].working.width);
   if (status == TS_OK)
     {
       size_t voxels = cube (params->size);
