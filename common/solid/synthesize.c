@@ -557,6 +557,7 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
     return ts_fail (error, TS_ERROR_INVALID_ARGUMENT,
                     "sources are written exactly when record_sources is set");
   memset (&run, 0, sizeof run);
+  run.mirrored_axis = -1;
   run.sources = sources;
   run.params = params;
   run.progress = progress;
