@@ -7,6 +7,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "test-util.h"
 #include "solid/solid.h"
+#include "slice-figures.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -72,22 +73,6 @@ test_bias (void)
   ts_image_free (&flat);
 }
 
-/* The slice across `axis` at its middle, read as slice-figures.c does:
- * across x (y, z), across y (x, z), across z (x, y). */
-static void
-middle_slice (const float *volume, size_t n, int axis, TsImage *slice)
-{
-  CHECK (ts_image_alloc (slice, n, n) == TS_OK, "out of memory");
-  for (size_t v = 0; v < n; v++)
-    for (size_t u = 0; u < n; u++)
-      {
-        size_t x = axis == 0 ? n / 2 : u, y = axis == 1 ? n / 2 : (axis == 0 ? u : v);
-        size_t z = axis == 2 ? n / 2 : v;
-        memcpy (slice->pixels + (v * n + u) * TS_CHANNELS,
-                volume + ((z * n + y) * n + x) * TS_CHANNELS, TS_CHANNELS * sizeof (float));
-      }
-}
-
 /* Synthesises EDGE^3 from `ex` on every orientation; checks the sources'
  * round trip and returns the middle slices' biases. */
 static void
@@ -124,7 +109,8 @@ slice_biases (const TsImage *const ex[3], double bias[3])
   for (int a = 0; a < 3; a++)
     {
       TsImage slice;
-      middle_slice (volume, EDGE, a, &slice);
+      CHECK (ts_image_alloc (&slice, EDGE, EDGE) == TS_OK, "out of memory");
+      slice_cut (volume, EDGE, a, EDGE / 2, &slice);
       bias[a] = ts_solid_diagonal_bias (&slice);
       ts_image_free (&slice);
     }
