@@ -13,10 +13,11 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-/* The largest, over the periods 2, 4 and 8, of the mean squared Lab step
- * across the planes at multiples of the period divided by that across
- * the other planes (each axis's steps over its mean step, the three axes
- * pooled). About 1 for a solid without a lattice. `volume` is n^3 Lab +
+/* Over the periods 2, 4 and 8, the mean squared Lab step across the
+ * planes at multiples of the period divided by that across the other
+ * planes (each axis's steps over its mean step, the three axes pooled):
+ * the one of the three farthest from 1, above or below. About 1 for a
+ * solid without a lattice. `volume` is n^3 Lab +
  * alpha, periodic. False if out of memory. */
 bool plane_step_lattice (const float *volume, size_t n, double *ratio);
 

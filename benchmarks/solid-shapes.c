@@ -19,8 +19,8 @@
  * slices ("planes", seam-planes.h): a seam only counts when it stands
  * out from them, and the largest edge anisotropy of any x, y or z slice
  * ("streaks", slice-figures.h): extrusion in any direction, then
- * how much the steps across a lattice of voxel planes exceed the others
- * ("grid", plane-steps.h): axis-aligned blocks, and last the specks per
+ * how far the steps across a lattice of voxel planes stand from the
+ * others ("grid", plane-steps.h): axis-aligned blocks, and last the specks per
  * 1000 pixels over every x, y and z slice ("specks", phase-thickness.h):
  * ragged, speckled edges that sharpness counts as edge, and the light
  * sections per slice over the exemplar's ("sections", phase-thickness.h):
