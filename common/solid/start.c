@@ -9,12 +9,25 @@
  * next; now 1.00-1.05), and so the volume kept fewer, larger spots.
  * A level that records sources (the finest, when asked) records the one
  * each start value copies.
+ *
+ * Along its own axis an orientation's refined source is the same on both
+ * children of a parent, so every level's start held pairs of equal
+ * planes, and what the short middle level could not undo stayed in the
+ * volume as a lattice of blocks (128^3 blobs, seeds 1-6: `grid` 1.32-1.55
+ * at periods 4 and 8, the coarser levels' cells). Each orientation now
+ * pairs its children along its own axis at a random shift per block of
+ * the slice: grid 1.07-1.19, sharpness within 0.01 (README stop 55).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/rng.h"
 
 #include <math.h>
 #include <string.h>
+
+/* Side, in voxels of the slice, of the blocks that share one pairing
+ * shift (below): with a shift per line of voxels (side 1) the slices
+ * turned ragged and 128^3 blobs lost 0.02-0.04 of sharpness. */
+#define PAIRING_BLOCK 8
 
 /* The voxel's value: of its orientations' source colours, the one
  * closest to their mean (a sharp start that agrees with most of them). */
@@ -137,6 +150,19 @@ winner (const TsSolidLevel *c, size_t parent)
   return -1;
 }
 
+/* The coarser coordinate of x along one axis when its children pair up
+ * shifted by `shift` (0: 2i and 2i + 1 share a parent; 1: 2i - 1 and 2i
+ * do), wrapped or clamped at the border. */
+static size_t
+parent_of (size_t x, size_t shift, size_t cn, bool periodic)
+{
+  size_t c = (x + shift) / 2;
+
+  if (c >= cn)
+    c = periodic ? c - cn : cn - 1;
+  return c;
+}
+
 void
 ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *c, size_t level, uint32_t seed)
 {
@@ -147,14 +173,24 @@ ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *c, size_t leve
     for (size_t x = 0; x < n; x++)
       {
         size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
-        size_t parent = ((xyz[2] / 2) * cn + xyz[1] / 2) * cn + x / 2;
+        size_t cxyz[3] = { x / 2, xyz[1] / 2, xyz[2] / 2 };
+        size_t parent = (cxyz[2] * cn + cxyz[1]) * cn + cxyz[0];
         for (int a = 0; a < TS_SOLID_AXES; a++)
           {
             int u, v;
+            size_t q[3] = { cxyz[0], cxyz[1], cxyz[2] };
             if (!l->source[a])
               continue;
             ts_solid_plane_axes (a, &u, &v);
-            size_t cw = c->view[a].exemplar->width, s = (size_t) c->source[a][parent];
+            /* Along its own axis an orientation's source would repeat
+             * on both children of a parent: pair them up at a random
+             * shift per block of the slice instead. */
+            size_t block = (xyz[(a + 1) % 3] / PAIRING_BLOCK) * n
+                           + xyz[(a + 2) % 3] / PAIRING_BLOCK;
+            q[a] = parent_of (xyz[a], ts_random (seed, (uint32_t) level, 8, block, 50 + (uint32_t) a) & 1,
+                              cn, l->periodic);
+            size_t cw = c->view[a].exemplar->width;
+            size_t s = (size_t) c->source[a][(q[2] * cn + q[1]) * cn + q[0]];
             l->source[a][p] = opaque_source (&l->view[a], 2 * (s % cw) + (xyz[u] & 1),
                                              2 * (s / cw) + (xyz[v] & 1),
                                              ts_random (seed, (uint32_t) level, 0, p, 6));
@@ -172,4 +208,3 @@ ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *c, size_t leve
           l->chosen[p] = ts_solid_source_pack (a, (uint32_t) l->source[a][p]);
       }
 }
-
