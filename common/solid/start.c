@@ -13,7 +13,7 @@
  * Along its own axis an orientation's refined source is the same on both
  * children of a parent, so every level's start held pairs of equal
  * planes, and what the short middle level could not undo stayed in the
- * volume as a lattice of blocks (128^3 blobs, seeds 1-6: `grid` 1.32-1.55
+ * volume as a lattice of blocks (128^3 blobs, seeds 1-6: `grid` 1.32-1.74
  * at periods 4 and 8, the coarser levels' cells). Each orientation now
  * pairs its children along its own axis at a random shift per block of
  * the slice: grid 1.07-1.19, sharpness within 0.01 (README stop 55).
