@@ -34,9 +34,14 @@
  * sets the iterations per level and pass, -p the large neighbourhood's
  * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
  * whether the axis-edges aim applies: only near 0 does an isotropic
- * solid's slice compare like with like. The share of voxels copied from
- * each orientation's votes shows when one orientation dominates (its
- * layers streak the other slices). -n adds a "sample" row: the same
+ * solid's slice compare like with like. Beside it, the exemplar's own
+ * axis-edge share and the share of edges spread evenly over every
+ * direction (2 x TS_AXIS_EDGE_DEGREES / 90, 0.222): a soft exemplar whose
+ * share lies below that has its edges turned off the axes (granite1's
+ * veins: 0.199), and a slice that keeps its texture but not that
+ * orientation reads their ratio (1.12), not 1. The share of voxels
+ * copied from each orientation's votes shows when one orientation
+ * dominates (its layers streak the other slices). -n adds a "sample" row: the same
  * truth solid drawn with another seed, measured against this exemplar,
  * which is what a perfect engine (a genuinely new sample of the texture)
  * would score: the aims it misses are the measures' own spread.
@@ -298,13 +303,16 @@ main (int argc, char **argv)
             }
           else
             {
-              double seconds = now () - start, anisotropy = NAN, thick;
+              double seconds = now () - start, anisotropy = NAN, axis_share = NAN, thick;
               size_t wins[3] = { 0, 0, 0 }, voxels = n * n * n;
               ts_measure_anisotropy (&exemplar, &anisotropy);
+              ts_measure_axis_edge_share (&exemplar, &axis_share);
               for (size_t p = 0; p < voxels; p++)
                 wins[ts_solid_source_axis (sources[p]) % 3]++;
-              printf ("%-9s %zu^3 synthesised in %.2f s (exemplar anisotropy %.3f; voxels copied "
-                      "by x %.0f %%, y %.0f %%, z %.0f %%)\n", base, n, seconds, anisotropy,
+              printf ("%-9s %zu^3 synthesised in %.2f s (exemplar anisotropy %.3f, axis-edge share "
+                      "%.3f against %.3f for edges in every direction; voxels copied "
+                      "by x %.0f %%, y %.0f %%, z %.0f %%)\n", base, n, seconds, anisotropy, axis_share,
+                      2.0 * TS_AXIS_EDGE_DEGREES / 90.0,
                       100.0 * (double) wins[0] / (double) voxels, 100.0 * (double) wins[1] / (double) voxels,
                       100.0 * (double) wins[2] / (double) voxels);
               /* exemplar | truth across x | ours across x, y, z, diagonal */
