@@ -41,10 +41,11 @@
  * veins: 0.199), and a slice that keeps its texture but not that
  * orientation reads their ratio (1.12), not 1. The share of voxels
  * copied from each orientation's votes shows when one orientation
- * dominates (its layers streak the other slices). -n adds a "sample" row: the same
- * truth solid drawn with another seed, measured against this exemplar,
- * which is what a perfect engine (a genuinely new sample of the texture)
- * would score: the aims it misses are the measures' own spread.
+ * dominates (its layers streak the other slices). -n adds a "sample"
+ * row: the same truth solid drawn with another seed, measured against
+ * this exemplar, which is what a perfect engine (a genuinely new sample
+ * of the texture) would score: the aims it misses are the measures' own
+ * spread.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "metrics.h"
