@@ -7,7 +7,8 @@
  * share of gradient energy within 10 degrees of the axes, over the
  * exemplar's) and the seam. An image path instead of a kind measures the
  * synthesis from its central SIZE x SIZE crop alone (no truth).
- * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] [-c] [cells|blobs|grains|IMAGE.png]...
+ * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-q QUALITY] [-n] [-c]
+ *                     [cells|blobs|grains|IMAGE.png]...
  * -c turns the cell structure guide on (TsSolidParams.cell_structure) for
  * the solids named after it.
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
@@ -32,9 +33,10 @@
  * the lightness step between neighbours of the same phase over the
  * exemplar's ("grain", stones then joints): rough stones or joints. -i
  * sets the iterations per level and pass, -p the large neighbourhood's
- * side (0 = the schedule's). The exemplar's anisotropy (metrics.h) says
- * whether the axis-edges aim applies: only near 0 does an isotropic
- * solid's slice compare like with like. Beside it, the exemplar's own
+ * side (0 = the schedule's), -q the quality (the search's breadth,
+ * TsSolidParams.quality; 0 = the default). The exemplar's anisotropy
+ * (metrics.h) says whether the axis-edges aim applies: only near 0 does
+ * an isotropic solid's slice compare like with like. Beside it, the exemplar's own
  * axis-edge share and the share of edges spread evenly over every
  * direction (2 x TS_AXIS_EDGE_DEGREES / 90, 0.222): a soft exemplar whose
  * share lies below that has its edges turned off the axes (granite1's
@@ -207,7 +209,7 @@ int
 main (int argc, char **argv)
 {
   const char *dir = NULL;
-  int iterations = 0, patch = 0;
+  int iterations = 0, patch = 0, quality = 0;
   bool new_sample = false, cell_structure = false;
   size_t n = argc > 2 ? (size_t) atol (argv[1]) : 0;
   uint32_t seed = argc > 2 ? (uint32_t) strtoul (argv[2], NULL, 10) : 0;
@@ -215,7 +217,7 @@ main (int argc, char **argv)
 
   if (n < 16 || n > 512)
     {
-      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-n] [-c] "
+      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-q QUALITY] [-n] [-c] "
                        "[cells|blobs|grains|IMAGE.png]...\n");
       return 2;
     }
@@ -240,6 +242,12 @@ main (int argc, char **argv)
       if (!strcmp (name, "-p") && i + 1 < argc)
         {
           patch = atoi (argv[++i]);
+          free (ours);
+          continue;
+        }
+      if (!strcmp (name, "-q") && i + 1 < argc)
+        {
+          quality = atoi (argv[++i]);
           free (ours);
           continue;
         }
@@ -293,6 +301,8 @@ main (int argc, char **argv)
           params.seed = seed;
           params.max_iterations = iterations;
           params.patch_size = patch;
+          if (quality)
+            params.quality = quality;
           params.record_sources = true;
           params.cell_structure = cell_structure;
           start = now ();

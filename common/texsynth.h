@@ -233,7 +233,9 @@ typedef struct
 {
   size_t   size;               /* edge of the cube, TS_SOLID_MIN_SIZE ..   */
   bool     periodic;           /* the volume tiles in x, y and z           */
-  int      quality;            /* as TsParams                              */
+  int      quality;            /* 1 .. 10: breadth of the search over all
+                                  exemplar neighbourhoods (3 x quality
+                                  kd-tree leaves per query)               */
   uint32_t seed;
   int      patch_size;         /* 0 = automatic; else odd, 3 .. 31         */
   int      max_iterations;     /* 0 = automatic; else 1 .. 100 per level   */

@@ -64,7 +64,7 @@ query (void)
     { GIMP_PDB_DRAWABLE, "drawable", "Exemplar layer" },
     { GIMP_PDB_INT32,    "size",     "Edge of the cube in voxels (8-512)" },
     { GIMP_PDB_STRING,   "path",     "Volume file to write: .vol, .dds or .png" },
-    { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
+    { GIMP_PDB_INT32,    "quality",  "Search breadth per voxel (1-10, default 2)" },
     { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
     /* Last: every argument before it keeps its place. */
     { GIMP_PDB_INT32,    "cell-structure",

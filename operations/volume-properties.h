@@ -16,8 +16,8 @@ property_boolean (periodic, _("Periodic"), ts_volume_op_default_params ().period
                  "slice tiles"))
 
 property_int (quality, _("Quality"), ts_volume_op_default_params ().quality)
-  description (_("Candidates compared per voxel and orientation "
-                 "(k = quality + 1): higher searches more and is slower"))
+  description (_("Search breadth per voxel and orientation (3 x quality "
+                 "tree leaves): higher searches more and is slower"))
   value_range (TS_MIN_QUALITY, TS_MAX_QUALITY)
 
 property_seed (seed, _("Random seed"), rand)

@@ -1,5 +1,6 @@
-/* Solid M-step: k-coherence search of the best exemplar neighbourhood for
- * the slice neighbourhoods of one orientation.
+/* Solid M-step: the best exemplar neighbourhood for the slice
+ * neighbourhoods of one orientation, among the coherent ones and the
+ * nearest of all (Kopf et al. 2007).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/kcoherence.h"
@@ -11,9 +12,6 @@
 
 /* Kwatra et al.'s robust energy exponent, as in 2D. */
 #define TS_ENERGY_EXPONENT 0.8f
-/* Leaves of the exemplar index a query visits. */
-#define TS_SOLID_INDEX_LEAVES 6
-
 typedef struct
 {
   const TsSolidLevel *level;
@@ -40,8 +38,16 @@ gather (const Plane *p, size_t t, ptrdiff_t cu, ptrdiff_t cv, size_t radius, flo
     }
 }
 
+/* The exemplar neighbourhood that continues `source` from (du, dv) away. */
 static void
-search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
+propose_coherent (TsSearch *s, int32_t source, ptrdiff_t du, ptrdiff_t dv)
+{
+  size_t w = s->exemplar->width;
+  ts_search_consider (s, (ptrdiff_t) ((size_t) source % w) - du, (ptrdiff_t) ((size_t) source / w) - dv);
+}
+
+static void
+search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t leaves,
                uint32_t seed_stream, size_t t, ptrdiff_t cu, ptrdiff_t cv, size_t centre_index)
 {
   const TsSolidLevel *level = p->level;
@@ -53,16 +59,14 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
   size_t base = t * p->stride_t;
 
   /* The centre's own source first: a tight bound for the early abort. */
-  ts_search_propose (s, view->candidates, k_use,
-                     source[base + (size_t) cu * p->stride_u + (size_t) cv * p->stride_v], 0, 0);
+  propose_coherent (s, source[base + (size_t) cu * p->stride_u + (size_t) cv * p->stride_v], 0, 0);
   for (ptrdiff_t dv = first; dv <= r; dv += step)
     {
       size_t v = ts_border_index (cv + dv, n, level->periodic);
       for (ptrdiff_t du = first; du <= r; du += step)
         {
           size_t u = ts_border_index (cu + du, n, level->periodic);
-          ts_search_propose (s, view->candidates, k_use,
-                             source[base + u * p->stride_u + v * p->stride_v], du, dv);
+          propose_coherent (s, source[base + u * p->stride_u + v * p->stride_v], du, dv);
         }
     }
   if (view->index && view->index->patch == pass->patch)
@@ -74,7 +78,7 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
       int32_t found[TS_SOLID_INDEX_RESULTS];
       size_t w = view->exemplar->width;
       ts_solid_index_project (view->index, s->neighbourhood, projected);
-      ts_solid_index_query (view->index, projected, TS_SOLID_INDEX_LEAVES, found);
+      ts_solid_index_query (view->index, projected, leaves, found);
       for (size_t k = 0; k < TS_SOLID_INDEX_RESULTS && found[k] >= 0; k++)
         ts_search_consider (s, (ptrdiff_t) ((size_t) found[k] % w), (ptrdiff_t) ((size_t) found[k] / w));
     }
@@ -83,7 +87,7 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t k_use,
       /* Only transparent sources around: a random opaque pixel. */
       uint64_t r64 = ts_random (seed_stream, (uint32_t) p->axis, 0, centre_index, 7);
       int32_t q = view->opaque[ts_random_below (r64, view->opaque_count)];
-      ts_search_propose (s, view->candidates, 0, q, 0, 0);
+      propose_coherent (s, q, 0, 0);
     }
 }
 
@@ -104,7 +108,7 @@ match_error (const TsSolidVarianceMap *map, int32_t centre, float ssd, float pix
 
 TsStatus
 ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const TsAxisGrid *gv,
-                const TsPass *pass, size_t k_use, size_t t_offset, uint32_t seed_stream,
+                const TsPass *pass, size_t leaves, size_t t_offset, uint32_t seed_stream,
                 TsSolidMatch *matches, TsCancel *cancel)
 {
   const TsImage *ex = level->view[axis].exemplar;
@@ -155,7 +159,7 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
 
         gather (&plane, t, pu, pv, radius, neighbourhood);
         ts_search_begin (&s, ex_pixels);
-        search_centre (&s, &plane, pass, k_use, seed_stream, t, pu, pv, (size_t) i);
+        search_centre (&s, &plane, pass, leaves, seed_stream, t, pu, pv, (size_t) i);
         matches[i].centre = s.best_centre;
         matches[i].weight = powf (match_error (level->view[axis].variance, s.best_centre, s.best, pixels_per_patch)
                                   + 1e-2f, (TS_ENERGY_EXPONENT - 2.0f) * 0.5f);

@@ -96,7 +96,6 @@ static double
 estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], int threads)
 {
   double n3 = (double) params->size * (double) params->size * (double) params->size;
-  double k = (double) ts_schedule_max_candidates (params->quality);
   double bytes = 0;
 
   for (int a = 0; a < 3; a++)
@@ -104,7 +103,6 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
       {
         double ex = (double) exemplars[a]->width * (double) exemplars[a]->height;
         bytes += ex * 16.0 * 4.0 / 3.0;             /* working pyramid          */
-        bytes += 2.0 * ex * (k * 4.0 + 16.0);       /* candidate levels, MRPM   */
         bytes += (double) threads * ex * 4.0 + ex * 12.0; /* stamps, opaque, excesses */
         bytes += ex * (8.0 * 4.0 + 4.0 + 12.0 + 8.0); /* index: points, centres, nodes, build */
         bytes += ex * 8.0;                          /* variance map and its median */

@@ -141,7 +141,6 @@ void     ts_solid_cell_guide_free (TsSolidCellGuide *guide);
 typedef struct
 {
   const TsImage        *exemplar;    /* working exemplar level; NULL = free */
-  const TsCandidateSet *candidates;
   const int32_t        *opaque;      /* indices of pixels with alpha > 0    */
   size_t                opaque_count;
   float                *excess;      /* histogram excess per exemplar pixel, or NULL */
@@ -306,15 +305,18 @@ ts_solid_match_index (size_t cu, size_t cv, size_t t, size_t ju, size_t jv)
  * spacings. */
 void ts_solid_plan_level (const TsSolidParams *sp, size_t level, size_t levels, size_t n,
                           size_t ex_w, size_t ex_h, TsLevelPlan *plan);
+/* Leaves of the exemplar index a query visits at `quality` (1 .. 10). */
+size_t ts_solid_index_leaves (int quality);
 
 /* M-step of one orientation: the best exemplar neighbourhood for the
  * slice neighbourhood of every centre (the slices t = t_offset modulo
- * TS_SOLID_SLICE_SPACING, sparse grid gu x gv within them), among the
- * k-coherence candidates and, with the view's index, the nearest of all
- * exemplar neighbourhoods. `matches` has ts_solid_match_slices (n) *
+ * TS_SOLID_SLICE_SPACING, sparse grid gu x gv within them), among those
+ * that continue the slice neighbours' sources and, with the view's index,
+ * the nearest of all exemplar neighbourhoods (visiting `leaves` of its
+ * leaves, ts_solid_index_leaves). `matches` has ts_solid_match_slices (n) *
  * gu->centres * gv->centres entries (ts_solid_match_index). */
 TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu,
-                         const TsAxisGrid *gv, const TsPass *pass, size_t k_use,
+                         const TsAxisGrid *gv, const TsPass *pass, size_t leaves,
                          size_t t_offset, uint32_t seed_stream, TsSolidMatch *matches,
                          TsCancel *cancel);
 

@@ -1,7 +1,8 @@
 /* Solid texture synthesis from 2D exemplars (Kopf et al. 2007): texture
  * optimization over a cube, coarse to fine; in each slice orientation a
- * search over MRPM k-coherence candidates and over all exemplar
- * neighbourhoods (exemplar-index.c), and histogram matching.
+ * search over the neighbourhoods that continue the slice's sources and
+ * over all exemplar neighbourhoods (exemplar-index.c), and histogram
+ * matching.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/pyramid.h"
@@ -38,7 +39,6 @@ typedef struct
   const TsImage  *input;
   TsImage         working;      /* mirrored for run->mirrored_axis */
   TsPyramid       pyramid;
-  TsCandidateSet  candidates, coarser_candidates;
   int32_t        *opaque;
   size_t          opaque_count;
   float          *excess;
@@ -63,7 +63,6 @@ typedef struct
   size_t               exemplars;
   int                  mirrored_axis; /* reads its exemplar mirrored, or -1 */
   size_t               levels;      /* volume levels synthesised */
-  size_t               ex_levels;   /* >= levels: the coarser only seed MRPM */
   TsSolidLevel         level, coarser;
   float               *volume;                     /* the caller's: finest values */
   TsSolidSource       *sources;                    /* the caller's, or NULL */
@@ -154,8 +153,6 @@ run_free (Run *run)
       Exemplar *ex = &run->exemplar[e];
       ts_image_free (&ex->working);
       ts_pyramid_free (&ex->pyramid);
-      ts_candidate_set_free (&ex->candidates);
-      ts_candidate_set_free (&ex->coarser_candidates);
       free (ex->opaque);
       free (ex->excess);
       free (ex->position_count);
@@ -218,7 +215,6 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
       size_t d = ts_schedule_levels (run->exemplar[e].input);
       levels = d < levels ? d : levels;
     }
-  run->ex_levels = levels;
   while (levels > 1 && level_edge (run->params->size, levels - 1) < TS_SOLID_COARSEST_EDGE)
     levels--;
   run->levels = levels;
@@ -233,7 +229,7 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
         status = ts_solid_cell_guide_exemplar (&ex->working, &run->cells, &ex->stone_tone,
                                                &run->midway);
       if (status == TS_OK)
-        status = ts_pyramid_build (&ex->working, run->ex_levels, &ex->pyramid);
+        status = ts_pyramid_build (&ex->working, run->levels, &ex->pyramid);
       if (status == TS_OK && run->params->cell_structure)
         ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
     }
@@ -244,34 +240,16 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
            : TS_OK;
 }
 
-/* Candidate sets, opaque lists and histogram excesses of every exemplar at
- * `level`, and the views that point at them; only the candidate sets at
- * levels coarser than the volume's coarsest. */
+/* Opaque lists, histogram excesses and phase splits of every exemplar at
+ * `level`, and the views that point at them. */
 static TsStatus
-prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
+prepare_views (Run *run, size_t level)
 {
-  TsMrpmOptions options;
-
-  ts_mrpm_options_init (&options);
   for (size_t e = 0; e < run->exemplars; e++)
     {
       Exemplar *ex = &run->exemplar[e];
       const TsImage *img = &ex->pyramid.level[level];
       size_t pixels = ts_image_pixel_count (img);
-      TsStatus status = ts_mrpm_level (&ex->pyramid, level,
-                                       level + 1 < run->ex_levels ? &ex->coarser_candidates : NULL,
-                                       plan->k_level, &options, &run->midway, &ex->candidates);
-      if (status != TS_OK)
-        return status;
-      ts_candidate_set_free (&ex->coarser_candidates);
-      if (level >= run->levels)
-        {
-          /* Too coarse for the volume: its candidates only seed the next
-           * level's MRPM, which would otherwise search by brute force. */
-          ex->coarser_candidates = ex->candidates;
-          memset (&ex->candidates, 0, sizeof ex->candidates);
-          continue;
-        }
       free (ex->opaque);
       free (ex->excess);
       free (ex->position_count);
@@ -293,8 +271,6 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
       if (!run->params->cell_structure)
         ex->joint_split = -INFINITY;
     }
-  if (level >= run->levels)
-    return TS_OK;
   for (int a = 0; a < TS_SOLID_AXES; a++)
     {
       TsSolidView *view = &run->level.view[a];
@@ -303,7 +279,6 @@ prepare_views (Run *run, size_t level, const TsLevelPlan *plan)
         continue;
       Exemplar *ex = &run->exemplar[run->exemplar_of[a]];
       view->exemplar = &ex->pyramid.level[level];
-      view->candidates = &ex->candidates;
       view->opaque = ex->opaque;
       view->opaque_count = ex->opaque_count;
       view->excess = run->params->histogram_matching ? ex->excess : NULL;
@@ -370,11 +345,12 @@ iteration_free (Iteration *it)
 /* One M-step (all orientations) and one E-step (all batches); sets
  * *changed to the number of voxels whose value changed. */
 static TsStatus
-iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *batch_of,
+iterate (Run *run, const TsPass *pass, uint32_t stream, uint8_t *batch_of,
          TsSolidHistogram *histogram, size_t *changed)
 {
   TsSolidLevel *l = &run->level;
   size_t n = l->n, voxels = cube (n), radius = pass->patch / 2;
+  size_t leaves = ts_solid_index_leaves (run->params->quality);
   double share = (double) voxels / (double) (TS_SOLID_AXES + 1);
   Iteration it;
   TsSolidHistogramDelta delta;
@@ -401,7 +377,7 @@ iterate (Run *run, const TsPass *pass, size_t k_use, uint32_t stream, uint8_t *b
         ts_solid_cell_guide_apply (&run->cells, l->value, a);
       it.matches[a] = malloc (ts_solid_match_slices (n) * it.gu.centres * it.gv.centres
                               * sizeof (TsSolidMatch));
-      status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, k_use, it.t_offset[a],
+      status = it.matches[a] ? ts_solid_mstep (l, a, &it.gu, &it.gv, pass, leaves, it.t_offset[a],
                                                stream + (uint32_t) a, it.matches[a], &run->midway)
                              : TS_ERROR_OUT_OF_MEMORY;
       if (status == TS_OK && !report (run, share, "optimizing volume"))
@@ -473,13 +449,17 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
     {
       const TsPass *pass = &plan->pass[pi];
       size_t it;
+      /* Indexing all of a large exemplar's neighbourhoods is the level's
+       * exemplar matching: midway reports say so. */
+      run->stage = "matching exemplar";
       status = index_exemplars (run, level, pass->patch);
+      run->stage = "optimizing volume";
       for (it = 0; it < pass->max_iterations && status == TS_OK; it++)
         {
           uint32_t stream = (uint32_t) ts_random (run->params->seed, (uint32_t) level,
                                                   (uint32_t) (pi * 1000 + it), 0, 2);
           size_t changed;
-          status = iterate (run, pass, plan->k_use, stream, batch_of,
+          status = iterate (run, pass, stream, batch_of,
                             run->params->histogram_matching ? &histogram : NULL, &changed);
           if (status == TS_OK && (double) changed < TS_SOLID_CONVERGED_FRACTION * (double) voxels)
             {
@@ -509,7 +489,7 @@ synthesize_level (Run *run, size_t level)
 
   plan_level (run, level, &plan);
   run->stage = "matching exemplar";
-  status = prepare_views (run, level, &plan);
+  status = prepare_views (run, level);
   if (status == TS_OK && !report (run, (double) cube (level_edge (run->params->size, level)),
                                   "matching exemplar"))
     status = TS_ERROR_CANCELLED;
@@ -532,12 +512,6 @@ synthesize_level (Run *run, size_t level)
   run->level.shear = run->params->cell_structure || level >= TS_SOLID_SHEAR_LEVELS ? 0.0f : TS_SOLID_SHEAR;
   run->level.cell_of = run->cells.cell_of;
   run->level.cell_tone = NULL;
-  for (size_t e = 0; e < run->exemplars; e++)
-    {
-      /* This level's candidates seed the next finer level's MRPM. */
-      run->exemplar[e].coarser_candidates = run->exemplar[e].candidates;
-      memset (&run->exemplar[e].candidates, 0, sizeof (TsCandidateSet));
-    }
   return optimize_level (run, level, &plan);
 }
 
@@ -569,12 +543,6 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
   if (status == TS_OK)
     {
       run.total = planned_work (&run);
-      for (size_t l = run.ex_levels; l-- > run.levels && status == TS_OK;)
-        {
-          TsLevelPlan plan;
-          plan_level (&run, l, &plan);
-          status = prepare_views (&run, l, &plan);
-        }
       for (size_t l = run.levels; l-- > 0 && status == TS_OK;)
         status = synthesize_level (&run, l);
     }

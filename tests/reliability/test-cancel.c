@@ -2,7 +2,8 @@
  * points of a 2D synthesis (default 1024x1024) and of a solid one
  * (default 128^3; also with the cell structure, early), and inside the
  * exemplar matching of both from a large
- * exemplar (default 512x512, whose matching alone takes about a second);
+ * exemplar (default 512x512: MRPM's candidate sets in 2D, the index of
+ * all neighbourhoods in the solid engine);
  * the engine must return TS_ERROR_CANCELLED within a bound, leave a 2D
  * output untouched (a volume is synthesised in place: its contents are
  * then unspecified) and free everything (the leak check is ASan's or
@@ -22,12 +23,15 @@
  * 0.05 s from inside its steps (common/engine/cancel.h), so even a loaded
  * 2-core machine stays far below it; the figure itself is printed.
  * Sanitizer builds run the engine about 10x slower: there smaller runs
- * check that a cancel frees everything. */
+ * check that a cancel frees everything. Their large exemplar is 256:
+ * the solid engine's exemplar matching (indexing all neighbourhoods) of
+ * a 200x200 one ends within one 0.05 s report interval natively, so
+ * would never be cancelled midway. */
 #ifdef TEST_SANITIZED
 #define DEFAULT_BOUND_S 10.0
 #define DEFAULT_SIDE 256
 #define DEFAULT_SOLID_SIZE 32
-#define DEFAULT_LARGE_EXEMPLAR 160
+#define DEFAULT_LARGE_EXEMPLAR 256
 #else
 #define DEFAULT_BOUND_S 1.0
 #define DEFAULT_SIDE 1024

@@ -186,6 +186,12 @@ test_determinism (void)
   p.seed = 6;
   CHECK (run (all, &p, &c, NULL) == TS_OK, "synthesis");
   CHECK (memcmp (a, c, n * n * n * 16) != 0, "another seed gives another volume");
+  /* The quality is the breadth of the search over all neighbourhoods. */
+  free (c);
+  p.seed = 5;
+  p.quality = TS_MAX_QUALITY;
+  CHECK (run (all, &p, &c, NULL) == TS_OK, "synthesis");
+  CHECK (memcmp (a, c, n * n * n * 16) != 0, "another quality gives another volume");
   free (a);
   free (b);
   free (c);
