@@ -369,11 +369,13 @@ run_solid (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_U
 
 /* --- registration -------------------------------------------------------- */
 
+/* `quality_texts`: the plugin-args.c entry whose label and tooltip the
+ * "quality" argument shows. */
 static void
-add_quality_and_seed (GimpProcedure *procedure)
+add_quality_and_seed (GimpProcedure *procedure, const gchar *quality_texts)
 {
-  gimp_procedure_add_int_argument (procedure, "quality", ts_arg_label ("quality"),
-                                   ts_arg_tooltip ("quality"), TS_PLUGIN_MIN_QUALITY,
+  gimp_procedure_add_int_argument (procedure, "quality", ts_arg_label (quality_texts),
+                                   ts_arg_tooltip (quality_texts), TS_PLUGIN_MIN_QUALITY,
                                    TS_PLUGIN_MAX_QUALITY, TS_PLUGIN_DEFAULT_QUALITY,
                                    G_PARAM_READWRITE);
   gimp_procedure_add_int_argument (procedure, "seed", ts_arg_label ("seed"),
@@ -393,7 +395,7 @@ add_render_arguments (GimpProcedure *procedure, const gchar *new_image_blurb)
                                    G_PARAM_READWRITE);
   gimp_procedure_add_boolean_argument (procedure, "tileable", ts_arg_label ("tileable"),
                                        ts_arg_tooltip ("tileable"), FALSE, G_PARAM_READWRITE);
-  add_quality_and_seed (procedure);
+  add_quality_and_seed (procedure, "quality");
   gimp_procedure_add_boolean_aux_argument (procedure, "size-chosen", "Size chosen",
                                            "Whether the user has chosen a size once",
                                            FALSE, G_PARAM_READWRITE);
@@ -454,7 +456,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                 _("Runs the texsynth:tileable GEGL operation on the layer in place: only "
                   "bands along the edges change. Undoable."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
-      add_quality_and_seed (procedure);
+      add_quality_and_seed (procedure, "quality");
     }
   else if (g_str_equal (name, TS_PROC_SOLID))
     {
@@ -476,7 +478,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                                        G_PARAM_READWRITE);
       gimp_procedure_add_string_argument (procedure, "path", ts_arg_label ("path"),
                                           ts_arg_tooltip ("path"), path, G_PARAM_READWRITE);
-      add_quality_and_seed (procedure);
+      add_quality_and_seed (procedure, "solid-quality");
       /* After seed, as in GIMP 2.10: positional calls keep their meaning. */
       gimp_procedure_add_boolean_argument (procedure, "cell-structure",
                                            ts_arg_label ("cell-structure"),
@@ -524,7 +526,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                                            ts_arg_tooltip ("sample-from"), 0,
                                            TS_PLUGIN_MAX_SAMPLE_FROM, 0, G_PARAM_READWRITE);
         }
-      add_quality_and_seed (procedure);
+      add_quality_and_seed (procedure, "quality");
     }
   return procedure;
 }

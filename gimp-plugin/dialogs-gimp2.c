@@ -249,7 +249,7 @@ ts_solid_dialog2 (TsSolidArgs *args)
             TS_PLUGIN_MAX_SOLID);
   form_path (&form, args->path, sizeof args->path, &entry);
   form_toggle (&form, "cell-structure", &args->cell_structure);
-  form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
+  form_int (&form, "solid-quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
             TS_PLUGIN_MAX_QUALITY);
   form_seed (&form, &seed, &randomize);
 

@@ -173,6 +173,11 @@ static const struct
   { "quality", N_("Quality"),
     N_("Candidates compared per pixel (k = quality + 1): higher searches more and "
        "is slower; 2 measured best on average") },
+  /* The solid engine's quality is its search's breadth (the volume ops'
+   * text). */
+  { "solid-quality", N_("Quality"),
+    N_("Search breadth per voxel and orientation (3 x quality tree leaves): higher "
+       "searches more and is slower") },
   { "seed", N_("Random seed"),
     N_("The same seed with the same settings gives the same result, whatever the "
        "number of threads; change it for another variation") },

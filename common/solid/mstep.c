@@ -12,6 +12,7 @@
 
 /* Kwatra et al.'s robust energy exponent, as in 2D. */
 #define TS_ENERGY_EXPONENT 0.8f
+
 typedef struct
 {
   const TsSolidLevel *level;
@@ -43,7 +44,8 @@ static void
 propose_coherent (TsSearch *s, int32_t source, ptrdiff_t du, ptrdiff_t dv)
 {
   size_t w = s->exemplar->width;
-  ts_search_consider (s, (ptrdiff_t) ((size_t) source % w) - du, (ptrdiff_t) ((size_t) source / w) - dv);
+  ts_search_consider (s, (ptrdiff_t) ((size_t) source % w) - du,
+                      (ptrdiff_t) ((size_t) source / w) - dv);
 }
 
 static void
