@@ -36,12 +36,12 @@
  * side (0 = the schedule's), -q the quality (the search's breadth,
  * TsSolidParams.quality; 0 = the default). The exemplar's anisotropy
  * (metrics.h) says whether the axis-edges aim applies: only near 0 does
- * an isotropic solid's slice compare like with like. Beside it, the exemplar's own
- * axis-edge share and the share of edges spread evenly over every
- * direction (2 x TS_AXIS_EDGE_DEGREES / 90, 0.222): a soft exemplar whose
- * share lies below that has its edges turned off the axes (granite1's
- * veins: 0.199), and a slice that keeps its texture but not that
- * orientation reads their ratio (1.12), not 1. The share of voxels
+ * an isotropic solid's slice compare like with like. Beside it, the
+ * exemplar's own axis-edge share and the share of edges spread evenly
+ * over every direction (2 x TS_AXIS_EDGE_DEGREES / 90, 0.222): a soft
+ * exemplar whose share lies below that has its edges turned off the axes
+ * (granite1's veins: 0.199), and a slice that keeps its texture but not
+ * that orientation reads their ratio (1.12), not 1. The share of voxels
  * copied from each orientation's votes shows when one orientation
  * dominates (its layers streak the other slices). -n adds a "sample"
  * row: the same truth solid drawn with another seed, measured against
