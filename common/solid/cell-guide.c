@@ -193,7 +193,7 @@ stone_mask (const TsImage *ex, float joint, float split, uint8_t *stone)
  * the dark stones: sections of the rimless stone mask darker than the
  * phase split. Counting the stones above the joint split alone gave 75
  * sections' worth of cells for the exemplar's 109, and sharpness
- * 0.85-0.87 x the truth's (128^3 cells, README stop 43). */
+ * 0.85-0.87 x the truth's (128^3 cells, solid history, stop 43). */
 static TsStatus
 guide_phases (const TsImage *working, uint8_t *light, uint8_t *stone, size_t *sections, size_t *dark,
               float *tone)

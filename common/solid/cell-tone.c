@@ -7,13 +7,13 @@
  *
  * A cell's tone is its light voxels' mean lightness as the M-step left
  * it (above the joint split: a dark stone's cell has no voxel above the
- * phase split, and went untoned, README stop 44), matched by rank to
+ * phase split, and went untoned, solid history, stop 44), matched by rank to
  * the exemplar's stone tones: the cell of the q-th quantile (by light
  * voxels) takes the tone of the q-th quantile of
  * the exemplar's stone pixels. The mean alone regresses to the middle,
  * since a cell's voxels first copy stones of many tones: the spread of
  * the stones' tones was 0.82 x the truth's on 128^3 seeds 1-5 (now
- * 0.92, README stop 42). The stones' tones come with their sections
+ * 0.92, solid history, stop 42). The stones' tones come with their sections
  * (cell-guide.c).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"

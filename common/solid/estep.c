@@ -44,12 +44,12 @@
  * joints end at the joint split, and with the rule at that split alone,
  * lone voxels of the dark stones between the splits stayed (128^3
  * cells, seeds 1-2: specks 2.7-4.2 x the truth's; with three classes
- * 1.6-2.3 x, README stop 44). Most specks left were light voxels in dark
- * stones held by one light face neighbour, so a light voxel with five
- * face neighbours below the phase split also counts as lone (1.7 and
- * 2.7 x -> 1.0 and 1.6 x; counting only neighbours in dark stones, 1.5
- * and 2.2 x, README stops 45-46; needing four of those merged light
- * sections, 0.86 -> 0.81 of the exemplar's).
+ * 1.6-2.3 x, solid history, stop 44). Most specks left were light
+ * voxels in dark stones held by one light face neighbour, so a light
+ * voxel with five face neighbours below the phase split also counts as
+ * lone (1.7 and 2.7 x -> 1.0 and 1.6 x; counting only neighbours in
+ * dark stones, 1.5 and 2.2 x, solid history, stops 45-46; needing four
+ * of those merged light sections, 0.86 -> 0.81 of the exemplar's).
  *
  * Cell tones (the level's `cell_tone`, at the finest level with the
  * cell guide): a vote for an exemplar stone whose tone differs from the

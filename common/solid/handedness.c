@@ -15,7 +15,7 @@
  * about 30-45°), 128^3 seeds 1-5, axis-edges of the x, y and z slices
  * over its exemplar's: mean 1.178 -> 1.107. Mirrored across y instead
  * (seeds 1-3): 1.128 against 1.083. Any sheets cut three of the six
- * face-diagonal planes along an axis (README stop 54).
+ * face-diagonal planes along an axis (solid history, stop 54).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 

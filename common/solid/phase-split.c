@@ -13,7 +13,7 @@
  * Midway, on 128^3 cells, it fell inside the stones' lightness (L* 36-77
  * there, the mortar's 15-35): the darkest stones and the dark rims of
  * the others counted as mortar, and the guide drew thick, grainy joints
- * and no dark stones (README, stop 43). */
+ * and no dark stones (solid history, stop 43). */
 #define TS_JOINT_SHARE 0.25f
 
 /* The 5th and 95th lightness percentiles of the opaque pixels; false if

@@ -14,7 +14,7 @@
  * schedule's patch / 4 gives 2). With 3 a voxel gets 13.5 votes instead
  * of 30 in that pass's E-step and the M-step searches 4/9 as many
  * centres: 128^3 took 22-27 s instead of 30-33, with the truth solids'
- * figures within their seed-to-seed spread (README stop 52). At 64^3,
+ * figures within their seed-to-seed spread (solid history, stop 52). At 64^3,
  * a run of a few seconds, it blunted the cells (sharpness 0.909 ->
  * 0.896 x the truth's, below test-solid-shapes' 0.90), so smaller
  * volumes keep 2. */
@@ -41,7 +41,7 @@
 
 /* Index leaves visited per quality step: the default quality (2) visits
  * 6. The solid engine's search effort is this breadth, not the 2D
- * engine's k-coherence candidates (README stop 57: MRPM's candidates
+ * engine's k-coherence candidates (solid history, stop 57: MRPM's candidates
  * added to it cost 18 % more time at 128^3, met no missed aim and took
  * 128^3 cells' seed-4 sharpness below 0.9 x the truth's). */
 #define TS_SOLID_LEAVES_PER_QUALITY 3
@@ -69,7 +69,7 @@ ts_solid_plan_level (const TsSolidParams *sp, size_t level, size_t levels, size_
    * 0.90 -> 0.94 x the truth's, cells' coherence 1.10 -> 1.11 x; aims
    * missed 2 -> 1 of 50). At stop 23, with 4 middle iterations per
    * pass, it unsettled the cells; the finest level has since taken
-   * their layout over (README stop 53). A 64^3 volume from a 64^2
+   * their layout over (solid history, stop 53). A 64^3 volume from a 64^2
    * exemplar, as in the tests, has no middle level. */
   p.patch_size = sp->patch_size ? sp->patch_size : (middle ? TS_SOLID_FINE_PATCH : TS_SOLID_PATCH);
   p.fine_patch_size = p.patch_size < TS_SOLID_FINE_PATCH ? p.patch_size : TS_SOLID_FINE_PATCH;

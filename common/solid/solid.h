@@ -1,5 +1,7 @@
 /* Solid synthesis internals: the state of one level of the volume, its
  * M-step and E-step, and Kopf et al.'s histogram matching (internal).
+ * "Solid history, stop N" in this folder's comments is that stop's
+ * section of docs/solid-history.md: what was measured, kept and dropped.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #ifndef TS_SOLID_H
 #define TS_SOLID_H
@@ -208,7 +210,7 @@ ts_solid_view_owner (const TsSolidLevel *level, int axis)
 /* ...at the finest levels only, this many. At the coarser ones it cost
  * 128^3 seed 2's sharpness (cells 0.916 -> 0.901 x the truth's, blobs
  * 0.844 -> 0.818) and changed no 64^3 figure; at the finest level alone
- * leopard's 64^3 streaks rose from 0.26 to 0.30 (README stop 51). */
+ * leopard's 64^3 streaks rose from 0.26 to 0.30 (solid history, stop 51). */
 #define TS_SOLID_SHEAR_LEVELS 2
 
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust

@@ -19,7 +19,8 @@
  * seeds 1 and 2: specks 0.96 and 1.58 x the truth's without this pass;
  * 0.82 and 1.21 x with pieces up to 4 voxels; 0.81 and 1.19 x up to 16:
  * the slices' specks left are cuts through larger pieces. Default path,
- * seeds 1-5: cells 4.26 -> 3.36 x, blobs 1.68 -> 1.42 x (README stop 48). */
+ * seeds 1-5: cells 4.26 -> 3.36 x, blobs 1.68 -> 1.42 x (solid
+ * history, stop 48). */
 #define TS_SOLID_SPECK_VOXELS 4
 
 /* Face neighbour `k` (0..5) of voxel p, as the E-step sees it

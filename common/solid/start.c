@@ -16,7 +16,7 @@
  * volume as a lattice of blocks (128^3 blobs, seeds 1-6: `grid` 1.32-1.74
  * at periods 4 and 8, the coarser levels' cells). Each orientation now
  * pairs its children along its own axis at a random shift per block of
- * the slice: grid 1.07-1.19, sharpness within 0.01 (README stop 55).
+ * the slice: grid 1.07-1.19, sharpness within 0.01 (solid history, stop 55).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/rng.h"

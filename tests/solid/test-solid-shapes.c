@@ -282,11 +282,12 @@ main (void)
      * phase split, in the darkest stones (phase-split.c), whose specks
      * were 1.4 x and sections 0.89: the dark stones between the splits
      * now hold specks where their texture crosses the phase split, as
-     * the truth's smooth ones seldom do (README, stop 44). Specks were
-     * 2.95 x before a light voxel with five face neighbours below the
-     * phase split counted as lone (estep.c, README stops 45-46), 2.56 x
-     * when only neighbours in dark stones counted, 1.83 x before the
-     * pieces of up to 4 voxels were removed (specks.c, README stop 47). */
+     * the truth's smooth ones seldom do (solid history, stop 44).
+     * Specks were 2.95 x before a light voxel with five face neighbours
+     * below the phase split counted as lone (estep.c, solid history,
+     * stops 45-46), 2.56 x when only neighbours in dark stones counted,
+     * 1.83 x before the pieces of up to 4 voxels were removed (specks.c,
+     * solid history, stop 47). */
     { "cells", 0.90, 1.15, 1.08, 1.7, true, 0.80, 1.0, 0.90, 0.82 },
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
@@ -294,7 +295,8 @@ main (void)
   /* At 64^3: axis-edges 1.055 and 1.040; streaks 0.127 and 0.263. Before
    * the E-step's shear rule (estep.c) axis-edges were 0.948 and 0.995,
    * and streaks 0.287 and 0.316 (java's a band of 45-degree streaks
-   * across its x slice, README stops 49-50): both bounds fail then. */
+   * across its x slice, solid history, stops 49-50): both bounds fail
+   * then. */
   test_cell_structure_refuses_transparency ();
   test_isotropic ("java.png", 0.20);
   test_isotropic ("leopard.png", 0.30);

@@ -1,0 +1,36 @@
+#!/usr/bin/python3
+# Regenerates docs/solid-cracked-mud.png: GIMP's ground1 pattern (cracked
+# mud), then the middle slices across x and z of a 128^3 solid texture
+# synthesised from it without the cell structure, then the same two with
+# cell-structure=true, all at the same scale. Run from the source root
+# after building:  docs/solid-cracked-mud.py [BUILD_DIR]
+# Needs the system python3 (PyGObject + Gegl typelib).
+# SPDX-License-Identifier: LGPL-3.0-or-later
+
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
+plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
+                         capture_output=True, text=True).stdout.strip()
+os.environ["GEGL_PATH"] = os.path.join(build, "operations") + ":" + plugins
+
+sys.path.insert(0, os.path.join(ROOT, "docs"))
+from panels import node, save_row  # noqa: E402  (after GEGL_PATH: Gegl.init reads it)
+
+SIZE = 128
+SEED = 1
+SCALE = 1.5
+
+load = node("gegl:load", path=os.path.join(ROOT, "tests", "exemplars", "ground1.png"))
+panels = [load]
+for cells in (False, True):
+    for axis in ("x", "z"):
+        cut = node("texsynth:volume-slice", size=SIZE, seed=SEED, axis=axis, index=SIZE // 2,
+                   cell_structure=cells)
+        load.connect_to("output", cut, "input")
+        panels.append(cut)
+save_row(panels, [SCALE] * len(panels), os.path.join(ROOT, "docs", "solid-cracked-mud.png"))
+print("wrote docs/solid-cracked-mud.png")
