@@ -1,9 +1,19 @@
 # A row of GEGL image nodes on a white backdrop, saved as PNG, for the
-# scripts that regenerate the README's pictures. Import after setting
-# GEGL_PATH (Gegl.init reads it).
+# scripts that regenerate the README's pictures. Importing it points GEGL
+# at the build's ops (BUILD: the script's first argument, else build/
+# under the source root) and GEGL's own, before Gegl.init reads GEGL_PATH.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 
-import gi
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
+os.environ["GEGL_PATH"] = os.path.join(BUILD, "operations") + ":" + subprocess.run(
+    ["pkg-config", "--variable=pluginsdir", "gegl-0.4"], capture_output=True, text=True).stdout.strip()
+
+import gi  # noqa: E402
 gi.require_version("Gegl", "0.4")
 from gi.repository import Gegl  # noqa: E402
 

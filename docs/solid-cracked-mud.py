@@ -8,17 +8,8 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 
 import os
-import subprocess
-import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True).stdout.strip()
-os.environ["GEGL_PATH"] = os.path.join(build, "operations") + ":" + plugins
-
-sys.path.insert(0, os.path.join(ROOT, "docs"))
-from panels import node, save_row  # noqa: E402  (after GEGL_PATH: Gegl.init reads it)
+from panels import ROOT, node, save_row
 
 SIZE = 128
 SEED = 1

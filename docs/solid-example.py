@@ -8,18 +8,11 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 
 import os
-import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
-exemplar = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "tests", "exemplars", "land1.png")
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True).stdout.strip()
-os.environ["GEGL_PATH"] = os.path.join(build, "operations") + ":" + plugins
+from panels import ROOT, node, save_row
 
-sys.path.insert(0, os.path.join(ROOT, "docs"))
-from panels import node, save_row  # noqa: E402  (after GEGL_PATH: Gegl.init reads it)
+exemplar = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "tests", "exemplars", "land1.png")
 
 SIZE = 128      # edge of the volume
 SCALE = 1.25    # every panel but the atlas, at the same scale

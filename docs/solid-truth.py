@@ -11,16 +11,9 @@
 
 import os
 import subprocess
-import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True).stdout.strip()
-os.environ["GEGL_PATH"] = os.path.join(build, "operations") + ":" + plugins
-sys.path.insert(0, os.path.join(ROOT, "docs"))
-from panels import node, save_row  # noqa: E402  (after GEGL_PATH: Gegl.init reads it)
+from panels import BUILD, ROOT, node, save_row
 
 SIZE = 128
 SEED = 1
@@ -30,7 +23,7 @@ with tempfile.TemporaryDirectory() as scratch:
     panels = []
     for kind in ("cells", "blobs", "grains"):
         truth = os.path.join(scratch, kind + ".vol")
-        subprocess.run([os.path.join(build, "benchmarks", "solid-truth"), kind, str(SIZE), str(SEED), truth],
+        subprocess.run([os.path.join(BUILD, "benchmarks", "solid-truth"), kind, str(SIZE), str(SEED), truth],
                        check=True)
         exemplar = node("texsynth:volume-load", path=truth, axis="z", index=0)
         truth_slice = node("texsynth:volume-load", path=truth, axis="x", index=SIZE // 2)
