@@ -8,18 +8,9 @@
 
 import os
 import subprocess
-import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True).stdout.strip()
-os.environ["GEGL_PATH"] = os.path.join(build, "operations") + ":" + plugins
-
-import gi  # noqa: E402  (after GEGL_PATH: Gegl.init reads it)
-gi.require_version("Gegl", "0.4")
-from gi.repository import Gegl  # noqa: E402
+from panels import ROOT, Gegl, graph
 
 SCALE = 2
 GAP = 8
@@ -32,8 +23,6 @@ subprocess.run(["gegl", "-i", os.path.join(ROOT, "examples", "brick.png"), "-o",
 subprocess.run(["gegl", "-i", before, "-o", after, "--", "texsynth:tileable", "seed=3"],
                check=True, capture_output=True)
 
-Gegl.init(None)
-graph = Gegl.Node()
 canvas = None
 x = 0
 for path in (before, after):
