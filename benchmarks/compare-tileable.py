@@ -43,14 +43,10 @@ parser.add_argument("props", nargs="*", help="extra key=value properties of texs
 args = parser.parse_args()
 
 measure_tool = os.path.join(args.build, "tools", "texsynth-measure")
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True).stdout.strip() \
-    or "/usr/lib/x86_64-linux-gnu/gegl-0.4"
-env = dict(os.environ, GEGL_PATH=os.path.join(args.build, "operations") + ":" + plugins)
-
-os.environ["GEGL_PATH"] = env["GEGL_PATH"]   # before tsops initialises GEGL
 sys.path.insert(0, os.path.join(ROOT, "tests", "ops"))
 import tsops  # noqa: E402
+tsops.use_build_ops(args.build)
+env = dict(os.environ)
 tsops.gegl()
 
 

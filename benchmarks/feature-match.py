@@ -14,7 +14,6 @@
 import argparse
 import os
 import statistics
-import subprocess
 import sys
 import tempfile
 
@@ -27,10 +26,8 @@ parser.add_argument("--seeds", default="1,2,3,4,5")
 parser.add_argument("--weights", default="none,0.5,1,2")
 parser.add_argument("-k", "--keep", help="keep the images in this folder")
 args = parser.parse_args()
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True, check=True).stdout.strip()
-os.environ["GEGL_PATH"] = os.path.join(args.build, "operations") + ":" + plugins
 import tsops  # noqa: E402
+tsops.use_build_ops(args.build)
 
 Gegl = tsops.gegl()
 work = args.keep or tempfile.mkdtemp()

@@ -19,14 +19,15 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "heal"))
+sys.path.insert(0, os.path.join(ROOT, "tests", "ops"))
 import healcases  # noqa: E402
+import tsops  # noqa: E402
 
 build = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build"))
 heal_time = os.path.join(build, "benchmarks", "heal-time")
 measure = os.path.join(build, "tools", "texsynth-heal-measure")
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True).stdout.strip()
-env = dict(os.environ, GEGL_PATH=os.path.join(build, "operations") + ":" + plugins)
+tsops.use_build_ops(build)
+env = dict(os.environ)
 work = tempfile.mkdtemp(prefix="texsynth-heal-bench-")
 exemplars = os.path.join(ROOT, "tests", "exemplars")
 if not os.path.isfile(healcases.SPLASH):

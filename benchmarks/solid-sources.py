@@ -14,7 +14,6 @@
 import argparse
 import os
 import struct
-import subprocess
 import sys
 import tempfile
 
@@ -26,10 +25,8 @@ parser.add_argument("-s", "--size", type=int, default=32)
 parser.add_argument("--seeds", default="1,2")
 parser.add_argument("--exemplars", default="brick.png,bark.png,granite1.png")
 args = parser.parse_args()
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True, check=True).stdout.strip()
-os.environ["GEGL_PATH"] = os.path.join(args.build, "operations") + ":" + plugins
 import tsops  # noqa: E402
+tsops.use_build_ops(args.build)
 
 DDS_DATA = 148  # "DDS ", DDS_HEADER, DDS_HEADER_DXT10
 work = tempfile.mkdtemp()

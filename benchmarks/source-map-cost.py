@@ -8,7 +8,6 @@
 import argparse
 import os
 import statistics
-import subprocess
 import sys
 import time
 
@@ -20,14 +19,10 @@ parser.add_argument("-s", "--side", type=int, default=1024)
 parser.add_argument("exemplars", nargs="*",
                     default=[os.path.join(ROOT, "tests", "exemplars", n) for n in ("bark.png", "brick.png")])
 args = parser.parse_args()
-plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                         capture_output=True, text=True, check=True).stdout.strip()
-os.environ["GEGL_PATH"] = os.path.join(args.build, "operations") + ":" + plugins
-
-import gi  # noqa: E402
-gi.require_version("Gegl", "0.4")
-from gi.repository import Gegl  # noqa: E402
-Gegl.init(None)
+sys.path.insert(0, os.path.join(ROOT, "tests", "ops"))
+import tsops  # noqa: E402
+tsops.use_build_ops(args.build)
+Gegl = tsops.gegl()
 
 
 def timed(build):

@@ -5,19 +5,15 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 
 import os
-import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
-os.environ["GEGL_PATH"] = os.path.join(BUILD, "operations") + ":" + subprocess.run(
-    ["pkg-config", "--variable=pluginsdir", "gegl-0.4"], capture_output=True, text=True).stdout.strip()
+sys.path.insert(0, os.path.join(ROOT, "tests", "ops"))
+import tsops  # noqa: E402
 
-import gi  # noqa: E402
-gi.require_version("Gegl", "0.4")
-from gi.repository import Gegl  # noqa: E402
-
-Gegl.init(None)
+tsops.use_build_ops(BUILD)
+Gegl = tsops.gegl()
 graph = Gegl.Node()
 
 

@@ -70,6 +70,28 @@ def workdir():
     return path
 
 
+# --- where GEGL finds the ops -------------------------------------------------
+
+def use_build_ops(build):
+    """Points GEGL_PATH at BUILD's op modules and at GEGL's own folder, which
+    GEGL_PATH otherwise replaces; call it before gegl() or a gegl tool reads
+    the variable. Never at the build root: GEGL would load meson's
+    compile_commands.json as an op and abort. Returns the value."""
+    try:
+        plugins = subprocess.run(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
+                                 capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError) as error:
+        plugins, reason = "", str(error)
+    else:
+        reason = "it printed nothing"
+    if not plugins:
+        die("pkg-config cannot name GEGL's op folder (Debian packages pkg-config "
+            "and libgegl-dev): %s" % reason)
+    path = os.path.join(os.path.abspath(build), "operations") + os.pathsep + plugins
+    os.environ["GEGL_PATH"] = path
+    return path
+
+
 # --- the gegl command-line tool ---------------------------------------------
 
 def gegl_binary():
