@@ -325,8 +325,11 @@ TsStatus ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *
 /* --- starts of a level (start.c) ------------------------------------------ */
 
 /* Coarsest level: random exemplar blocks of side at most `block` per
- * orientation, tiling the period at a random phase per axis. */
-void ts_solid_start_random_blocks (TsSolidLevel *l, size_t level, size_t block, uint32_t seed);
+ * orientation, tiling the period at a random phase per axis; each
+ * voxel's value is one orientation's colour drawn at random, or with
+ * `majority` the one nearest their mean. */
+void ts_solid_start_random_blocks (TsSolidLevel *l, size_t level, size_t block, uint32_t seed,
+                                   bool majority);
 /* Finer level: each voxel's sources are its parent's in `coarser`,
  * refined to the child pixel of the finer exemplar level; its value is
  * that of the orientation that won the parent. */

@@ -499,7 +499,8 @@ synthesize_level (Run *run, size_t level)
   if (status != TS_OK)
     return status;
   if (level + 1 == run->levels)
-    ts_solid_start_random_blocks (&run->level, level, plan.pass[0].patch, run->params->seed);
+    ts_solid_start_random_blocks (&run->level, level, plan.pass[0].patch, run->params->seed,
+                                  run->params->cell_structure);
   else
     ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed);
   level_free (&run->coarser, run->volume);
