@@ -29,6 +29,17 @@
  * turned ragged and 128^3 blobs lost 0.02-0.04 of sharpness. */
 #define PAIRING_BLOCK 8
 
+/* Voxel p copies the source of orientation a: its colour, and which
+ * source it is where the level records that. */
+static void
+take_source (TsSolidLevel *l, size_t p, int a)
+{
+  memcpy (l->value + p * TS_CHANNELS, l->view[a].exemplar->pixels + (size_t) l->source[a][p] * TS_CHANNELS,
+          TS_CHANNELS * sizeof (float));
+  if (l->chosen)
+    l->chosen[p] = ts_solid_source_pack (a, (uint32_t) l->source[a][p]);
+}
+
 /* The voxel's value: of its orientations' source colours, the one
  * closest to their mean (a sharp start that agrees with most of them). */
 static void
@@ -64,9 +75,7 @@ value_from_sources (TsSolidLevel *l, size_t p)
           chosen = a;
         }
     }
-  memcpy (l->value + p * TS_CHANNELS, colour[chosen], TS_CHANNELS * sizeof (float));
-  if (l->chosen)
-    l->chosen[p] = ts_solid_source_pack (chosen, (uint32_t) l->source[chosen][p]);
+  take_source (l, p, chosen);
 }
 
 /* The voxel's value: the source colour of one of its orientations,
@@ -88,11 +97,7 @@ value_from_random_source (TsSolidLevel *l, size_t p, uint64_t random)
       constrained[count++] = a;
   if (count == 0)
     return;
-  int a = constrained[ts_random_below (random, (uint64_t) count)];
-  memcpy (l->value + p * TS_CHANNELS, l->view[a].exemplar->pixels + (size_t) l->source[a][p] * TS_CHANNELS,
-          TS_CHANNELS * sizeof (float));
-  if (l->chosen)
-    l->chosen[p] = ts_solid_source_pack (a, (uint32_t) l->source[a][p]);
+  take_source (l, p, constrained[ts_random_below (random, (uint64_t) count)]);
 }
 
 /* Opaque source at exemplar (sx, sy), mirrored inside; a random opaque
@@ -234,10 +239,6 @@ ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *c, size_t leve
             value_from_sources (l, p);
             continue;
           }
-        memcpy (l->value + p * TS_CHANNELS,
-                l->view[a].exemplar->pixels + (size_t) l->source[a][p] * TS_CHANNELS,
-                TS_CHANNELS * sizeof (float));
-        if (l->chosen)
-          l->chosen[p] = ts_solid_source_pack (a, (uint32_t) l->source[a][p]);
+        take_source (l, p, a);
       }
 }
