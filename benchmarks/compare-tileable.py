@@ -46,13 +46,12 @@ measure_tool = os.path.join(args.build, "tools", "texsynth-measure")
 sys.path.insert(0, os.path.join(ROOT, "tests", "ops"))
 import tsops  # noqa: E402
 tsops.use_build_ops(args.build)
-env = dict(os.environ)
 tsops.gegl()
 
 
 def gegl(*argv):
     start = time.monotonic()
-    proc = subprocess.run(["gegl"] + list(argv), env=env, capture_output=True, text=True,
+    proc = subprocess.run(["gegl"] + list(argv), capture_output=True, text=True,
                           stdin=subprocess.DEVNULL)
     seconds = time.monotonic() - start
     problems = [l for l in proc.stderr.splitlines() if "texsynth" in l or "No such op" in l]

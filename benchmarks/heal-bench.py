@@ -27,7 +27,6 @@ build = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT,
 heal_time = os.path.join(build, "benchmarks", "heal-time")
 measure = os.path.join(build, "tools", "texsynth-heal-measure")
 tsops.use_build_ops(build)
-env = dict(os.environ)
 work = tempfile.mkdtemp(prefix="texsynth-heal-bench-")
 exemplars = os.path.join(ROOT, "tests", "exemplars")
 if not os.path.isfile(healcases.SPLASH):
@@ -35,7 +34,7 @@ if not os.path.isfile(healcases.SPLASH):
 
 
 def run(argv):
-    proc = subprocess.run(argv, capture_output=True, text=True, env=env)
+    proc = subprocess.run(argv, capture_output=True, text=True)
     if proc.returncode != 0:
         sys.exit("%s failed:\n%s" % (" ".join(argv), proc.stderr))
     return proc.stdout
