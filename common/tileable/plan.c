@@ -3,6 +3,7 @@
  * weights.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "plan.h"
+#include "engine/distance.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -13,7 +14,6 @@
  * lets the optimization alter more of what was exact (0.7 gave
  * worse seams on the shared exemplars; 0.35 much the same). */
 #define TS_TILEABLE_TRANSITION 0.5
-#define TS_TILEABLE_FAR 1e20
 /* Bounds the search for joins (and its memory) in huge images. */
 #define TS_TILEABLE_MAX_REACH 256
 
@@ -75,90 +75,16 @@ ts_tileable_in_band (const TsTileablePlan *plan, size_t x, size_t y)
          (plan->wrap_y && (y < plan->band_y || y >= plan->height - plan->band_y));
 }
 
-/* Where the parabolas of samples q and p of f meet. */
-static double
-intersection (const double *f, size_t q, size_t p)
-{
-  double a = (double) q, b = (double) p;
-  return ((f[q] + a * a) - (f[p] + b * b)) / (2.0 * a - 2.0 * b);
-}
-
-/* Felzenszwalb & Huttenlocher's 1D squared distance transform of f into d
- * (n samples); v and z are scratch of n and n + 1 entries. */
-static void
-distance_1d (const double *f, size_t n, double *d, size_t *v, double *z)
-{
-  size_t k = 0;
-
-  v[0] = 0;
-  z[0] = -INFINITY;
-  z[1] = INFINITY;
-  for (size_t q = 1; q < n; q++)
-    {
-      double s = intersection (f, q, v[k]);
-      /* z[0] is -infinity, so k never goes below 0. */
-      while (s <= z[k])
-        s = intersection (f, q, v[--k]);
-      k++;
-      v[k] = q;
-      z[k] = s;
-      z[k + 1] = INFINITY;
-    }
-  k = 0;
-  for (size_t q = 0; q < n; q++)
-    {
-      while (z[k + 1] < (double) q)
-        k++;
-      double t = (double) q - (double) v[k];
-      d[q] = t * t + f[v[k]];
-    }
-}
-
-/* Squared distance transform along one line of n samples read and written
- * with `stride`, wrapping by running over three periods. */
-static void
-distance_line (double *line, size_t n, size_t stride, bool wrap, double *f, double *d,
-               size_t *v, double *z)
-{
-  size_t copies = wrap ? 3 : 1, m = n * copies;
-
-  for (size_t i = 0; i < m; i++)
-    f[i] = line[(i % n) * stride];
-  distance_1d (f, m, d, v, z);
-  for (size_t i = 0; i < n; i++)
-    line[i * stride] = d[(copies / 2) * n + i];
-}
-
 TsStatus
 ts_tileable_distance (const unsigned char *mask, size_t width, size_t height, bool wrap_x,
                       bool wrap_y, float *distance)
 {
-  size_t n = width * height, longest = 3 * (width > height ? width : height);
-  double *grid = malloc (n * sizeof (double));
-  double *f = malloc (longest * sizeof (double)), *d = malloc (longest * sizeof (double));
-  double *z = malloc ((longest + 1) * sizeof (double));
-  size_t *v = malloc (longest * sizeof (size_t));
-  TsStatus status = TS_OK;
+  size_t n = width * height, dims[3] = { width, height, 1 };
+  bool wrap[3] = { wrap_x, wrap_y, false };
 
-  if (!grid || !f || !d || !z || !v)
-    status = TS_ERROR_OUT_OF_MEMORY;
-  else
-    {
-      for (size_t i = 0; i < n; i++)
-        grid[i] = mask[i] ? 0.0 : TS_TILEABLE_FAR;
-      for (size_t y = 0; y < height; y++)
-        distance_line (grid + y * width, width, 1, wrap_x, f, d, v, z);
-      for (size_t x = 0; x < width; x++)
-        distance_line (grid + x, height, width, wrap_y, f, d, v, z);
-      for (size_t i = 0; i < n; i++)
-        distance[i] = grid[i] >= TS_TILEABLE_FAR ? (float) TS_TILEABLE_FAR : (float) sqrt (grid[i]);
-    }
-  free (grid);
-  free (f);
-  free (d);
-  free (z);
-  free (v);
-  return status;
+  for (size_t i = 0; i < n; i++)
+    distance[i] = mask[i] ? 0.0f : TS_DISTANCE_FAR;
+  return ts_distance_transform (distance, dims, wrap);
 }
 
 /* Source (x, y) of output pixel (x, y) at the start. */
