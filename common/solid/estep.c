@@ -132,6 +132,7 @@ typedef struct
   int32_t      phase_source[LONE_CLASSES];
   int          phase_axis[LONE_CLASSES];
   float        tone;      /* the voxel's cell's tone, or NAN */
+  float        phase;     /* the voxel's phase distance (phase-guide.c), or NAN */
   float        shear;     /* the level's shear */
 } Votes;
 
@@ -215,6 +216,11 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
     }
   if (v->shear > 0.0f)
     weight /= 1.0f + v->shear * (float) sheared (v, view->exemplar, axis, source);
+  if (view->phase_distance && !isnan (v->phase))
+    {
+      float z = (view->phase_distance[source] - v->phase) / TS_SOLID_PHASE_SIGMA;
+      weight /= 1.0f + z * z;
+    }
   if (v->by_phase)
     {
       if (weight > v->phase_weight[phase])
@@ -405,6 +411,8 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
   v->tone = level->cell_tone
               ? level->cell_tone[level->cell_of[(xyz[2] * level->n + xyz[1]) * level->n + xyz[0]]]
               : NAN;
+  v->phase = level->phase_field ? level->phase_field[(xyz[2] * level->n + xyz[1]) * level->n + xyz[0]]
+                                : NAN;
   if (reads_face_neighbours (level))
     face_neighbours (level, v);
   v->weight = 0.0f;

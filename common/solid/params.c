@@ -108,6 +108,8 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
         bytes += ex * 8.0;                          /* variance map and its median */
         if (params->cell_structure)
           bytes += ex * 8.0;                        /* stone tones, sorted shades */
+        else
+          bytes += ex * 13.0; /* phase distances; the light pieces' scratch */
       }
   /* Finest level: the result volume (which holds the values), three
    * sources, the matches of three orientations on a grid of spacing 2 in
@@ -120,6 +122,9 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
                                               position histogram's own */
   if (params->cell_structure)
     bytes += n3 * (sizeof (float) + 3.0 + 4.0); /* the guide's distances, slants, cells */
+  else
+    bytes += n3 * 13.0; /* the phase guide (phase-guide.c): the walls' scratch at the
+                           finest level's start, then its 4-byte field */
   return bytes + 16.0 * 1024 * 1024;
 }
 

@@ -46,6 +46,33 @@ void     ts_solid_variance_map_free (TsSolidVarianceMap *map);
  * darkest stones' lightness (phase-split.c). */
 void ts_solid_splits (const TsImage *ex, float *phase, float *joint);
 
+/* Whether a working-format pixel lies on the light side of `split`
+ * (transparent pixels lie on neither). */
+static inline bool
+ts_solid_is_light (const float *pixel, float split)
+{
+  return pixel[3] > 0.0f && pixel[0] >= split;
+}
+
+/* The phase guide (phase-guide.c) and the walls at necks (neck-walls.c),
+ * at the finest level of the default path, when the exemplar's largest
+ * 4-connected light piece holds at most TS_SOLID_PIECES_APART of its
+ * light pixels. Whole bundled images (solid history, stop 63): the cells
+ * truth's exemplar 0.04, java 0.03, burlap 0.08, granite1 0.17, stone33
+ * 0.29, rock, bluemetal, land1 and bark 0.33-0.35, cracked, canyons2 and
+ * ground1 0.38-0.42, 3dweave 0.46 (on); parque1 0.501, wood1 0.70,
+ * brick 0.73, leopard 0.93, the blobs and grains truths' 0.97 (off). */
+#define TS_SOLID_PIECES_APART 0.5
+/* A vote whose source's signed distance to the phase boundary differs
+ * by z from the voxel's weighs 1 / (1 + (z / SIGMA)^2); distances are
+ * clipped to +-CLIP first (voxels or pixels). */
+#define TS_SOLID_PHASE_SIGMA 3.0f
+#define TS_SOLID_PHASE_CLIP 2.0f
+/* Two light basins stay apart where both peaks rise this far (voxels of
+ * distance to the dark phase) above the voxel where they meet. */
+#define TS_SOLID_NECK_HEIGHT 1.5f
+
+
 /* Which way round one orientation reads its exemplar (handedness.c).
  * With one image on all three orientations and its edges' energy-
  * weighted sin 2t below -TS_SOLID_MIRROR_BIAS (lines falling more than
@@ -155,6 +182,8 @@ typedef struct
                                         else -INFINITY */
   const float          *stone_tone;  /* finest level with the cell guide:
                                         per pixel, see ts_solid_cell_guide_exemplar */
+  const float          *phase_distance; /* with the phase guide: per pixel
+                                           (phase-guide.c); else NULL */
 } TsSolidView;
 
 typedef struct
@@ -175,6 +204,8 @@ typedef struct
                               sheared neighbour, 0 = off */
   const uint32_t *cell_of;  /* the cell guide's, at the finest level, or NULL */
   const float  *cell_tone;  /* per cell, with cell_of (cell-tone.c)    */
+  const float  *phase_field; /* with the phase guide: per voxel
+                                (phase-guide.c); else NULL */
 } TsSolidLevel;
 
 /* Adds an exemplar's stone pixels' section tones (`stone_tone`, NAN off
@@ -377,6 +408,17 @@ const TsSolidView *ts_solid_first_view (const TsSolidLevel *level);
  * face-connected piece on one side of the phase split copies a face
  * neighbour on the other side (specks.c). */
 TsStatus ts_solid_remove_specks (TsSolidLevel *level);
+
+/* At the finest level's start, with the phase guide: the light voxels
+ * where two deep basins of the light phase meet, and their light face
+ * neighbours, copy the nearest dark voxel (neck-walls.c). */
+TsStatus ts_solid_wall_necks (TsSolidLevel *level, float split);
+bool ts_solid_pieces_apart (const TsImage *ex, float split);
+/* Every pixel's clipped signed distance (light positive) to the phase
+ * boundary at `split`, in a new array. */
+TsStatus ts_solid_phase_distances (const TsImage *ex, float split, float **out);
+/* The same for every voxel of the level's values. */
+TsStatus ts_solid_phase_field (const TsSolidLevel *level, float split, float **out);
 
 /* --- E-step ---------------------------------------------------------------- */
 

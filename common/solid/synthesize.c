@@ -46,6 +46,7 @@ typedef struct
   float           phase_split;  /* of the current level (phase-split.c) */
   float           joint_split;  /* of the current level, with the cell guide */
   float          *stone_tone;   /* finest level, with the cell guide */
+  float          *phase_distance; /* finest level, with the phase guide */
   TsSolidIndex    index;      /* all neighbourhoods of the current pass */
   TsSolidVarianceMap variance; /* their colour variances                */
 } Exemplar;
@@ -68,6 +69,7 @@ typedef struct
   TsSolidSource       *sources;                    /* the caller's, or NULL */
   TsSolidSource       *own_sources; /* the position histogram's, if no caller's */
   TsSolidCellGuide     cells;       /* with params->cell_structure */
+  float               *phase_field; /* finest level, with the phase guide */
 } Run;
 
 static bool
@@ -147,6 +149,7 @@ run_free (Run *run)
   level_free (&run->level, run->volume);
   level_free (&run->coarser, run->volume);
   free (run->own_sources);
+  free (run->phase_field);
   ts_solid_cell_guide_free (&run->cells);
   for (size_t e = 0; e < run->exemplars; e++)
     {
@@ -157,6 +160,7 @@ run_free (Run *run)
       free (ex->excess);
       free (ex->position_count);
       free (ex->stone_tone);
+      free (ex->phase_distance);
       ts_solid_index_free (&ex->index);
       ts_solid_variance_map_free (&ex->variance);
     }
@@ -476,6 +480,35 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
   return status;
 }
 
+/* At the finest level's start on the default path, if the exemplar's
+ * light phase lies in separate pieces: walls at the start's necks
+ * (neck-walls.c), then the phase guide that holds them (phase-guide.c). */
+static TsStatus
+guide_phases (Run *run)
+{
+  TsSolidLevel *l = &run->level;
+  const TsSolidView *first = ts_solid_first_view (l);
+  TsStatus status;
+
+  if (!ts_solid_pieces_apart (first->exemplar, first->phase_split))
+    return TS_OK;
+  status = ts_solid_wall_necks (l, first->phase_split);
+  for (size_t e = 0; e < run->exemplars && status == TS_OK; e++)
+    {
+      Exemplar *ex = &run->exemplar[e];
+      status = ts_solid_phase_distances (&ex->pyramid.level[0], ex->phase_split, &ex->phase_distance);
+    }
+  if (status == TS_OK)
+    status = ts_solid_phase_field (l, first->phase_split, &run->phase_field);
+  if (status != TS_OK)
+    return status;
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    if (run->exemplar_of[a] >= 0)
+      l->view[a].phase_distance = run->exemplar[run->exemplar_of[a]].phase_distance;
+  l->phase_field = run->phase_field;
+  return TS_OK;
+}
+
 static TsStatus
 synthesize_level (Run *run, size_t level)
 {
@@ -506,6 +539,8 @@ synthesize_level (Run *run, size_t level)
   level_free (&run->coarser, run->volume);
   if (run->params->cell_structure)
     status = ts_solid_cell_guide_level (&run->cells, run->level.n, &run->midway);
+  else if (level == 0 && run->levels > 1)
+    status = guide_phases (run);
   if (status != TS_OK)
     return status;
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;

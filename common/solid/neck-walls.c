@@ -1,0 +1,212 @@
+/* Walls at the necks of the light phase, once, at the start of the
+ * finest level, for exemplars whose light phase lies in separate pieces
+ * (phase-guide.c). The start (the coarser level's layout, upsampled)
+ * merges neighbouring stones through light necks; a watershed of the
+ * light voxels' distance to the dark phase finds them: flooding from the
+ * deepest voxels down, two basins whose peaks both rise at least
+ * TS_SOLID_NECK_HEIGHT above the voxel where they meet stay apart, and
+ * that voxel becomes wall. The walls, thickened by one voxel, copy the
+ * nearest dark voxel; the phase guide then holds them through the
+ * level, whose slice neighbourhoods turn them into joints.
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "solid.h"
+#include "engine/distance.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The dark voxel a wall copies lies at most this far along each axis. */
+#define TS_SOLID_WALL_REACH 3
+
+#define DARK 0
+#define LIGHT 1
+#define WALL 2
+
+#define UNSEEN (-1)
+#define WALLED (-2)
+
+static int32_t
+find_root (int32_t *parent, int32_t p)
+{
+  while (parent[p] != p)
+    {
+      parent[p] = parent[parent[p]];
+      p = parent[p];
+    }
+  return p;
+}
+
+/* The light voxels by falling distance, ties by index: a counting sort
+ * on the squared distance, an integer. */
+static TsStatus
+deepest_first (const uint8_t *phase, const float *distance, size_t voxels, int32_t *order,
+               size_t *lights)
+{
+  size_t keys = 1;
+  for (size_t p = 0; p < voxels; p++)
+    if (phase[p] == LIGHT)
+      {
+        size_t k = (size_t) lroundf (distance[p] * distance[p]);
+        keys = k + 1 > keys ? k + 1 : keys;
+      }
+  size_t *start = calloc (keys + 1, sizeof (size_t));
+  if (!start)
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (size_t p = 0; p < voxels; p++)
+    if (phase[p] == LIGHT)
+      start[keys - 1 - (size_t) lroundf (distance[p] * distance[p]) + 1]++;
+  for (size_t k = 0; k < keys; k++)
+    start[k + 1] += start[k];
+  *lights = start[keys];
+  for (size_t p = 0; p < voxels; p++)
+    if (phase[p] == LIGHT)
+      order[start[keys - 1 - (size_t) lroundf (distance[p] * distance[p])]++] = (int32_t) p;
+  free (start);
+  return TS_OK;
+}
+
+/* Floods the light voxels in `order`; marks the voxels where two
+ * distinct basins meet WALL in `phase`. A basin's root is its deepest
+ * voxel, so its peak is distance[root]. */
+static void
+flood (const TsSolidLevel *level, uint8_t *phase, const float *distance, const int32_t *order,
+       size_t lights, int32_t *parent)
+{
+  size_t n = level->n;
+
+  for (size_t i = 0; i < lights; i++)
+    {
+      int32_t p = order[i], roots[6], deepest = -1;
+      int count = 0;
+      bool apart = false;
+      size_t xyz[3] = { (size_t) p % n, (size_t) p / n % n, (size_t) p / n / n };
+      for (int k = 0; k < 6; k++)
+        {
+          int32_t q = (int32_t) ts_solid_face_neighbour (level, xyz, k / 2, k & 1);
+          if (parent[q] < 0)
+            continue;
+          int32_t r = find_root (parent, q);
+          bool known = false;
+          for (int j = 0; j < count; j++)
+            known = known || roots[j] == r;
+          if (!known)
+            roots[count++] = r;
+        }
+      for (int j = 0; j < count; j++)
+        if (deepest < 0 || distance[roots[j]] > distance[deepest]
+            || (distance[roots[j]] == distance[deepest] && roots[j] < deepest))
+          deepest = roots[j];
+      for (int j = 0; j < count; j++)
+        apart = apart || (roots[j] != deepest && distance[roots[j]] - distance[p] >= TS_SOLID_NECK_HEIGHT);
+      if (apart)
+        {
+          parent[p] = WALLED;
+          phase[p] = WALL;
+          continue;
+        }
+      for (int j = 0; j < count; j++)
+        parent[roots[j]] = deepest;
+      parent[p] = count > 0 ? deepest : p;
+    }
+}
+
+/* Light face neighbours of the walls become walls too. */
+static void
+thicken (const TsSolidLevel *level, uint8_t *phase, size_t voxels)
+{
+  size_t n = level->n;
+
+  for (size_t p = 0; p < voxels; p++)
+    if (phase[p] == WALL)
+      {
+        size_t xyz[3] = { p % n, p / n % n, p / n / n };
+        for (int k = 0; k < 6; k++)
+          {
+            size_t q = ts_solid_face_neighbour (level, xyz, k / 2, k & 1);
+            /* Marked apart from the walls, so the new ones do not grow. */
+            if (phase[q] == LIGHT)
+              phase[q] = WALL + 1;
+          }
+      }
+  for (size_t p = 0; p < voxels; p++)
+    if (phase[p] == WALL + 1)
+      phase[p] = WALL;
+}
+
+/* Each wall copies the nearest dark voxel within reach (the first in
+ * scan order among equals): reads dark voxels only, writes walls only. */
+static void
+copy_dark (TsSolidLevel *level, const uint8_t *phase)
+{
+  long n = (long) level->n, reach = TS_SOLID_WALL_REACH;
+
+#pragma omp parallel for schedule(static) if (level->n >= TS_SOLID_PARALLEL_EDGE)
+  for (ptrdiff_t i = 0; i < (ptrdiff_t) (n * n * n); i++)
+    {
+      long x = (long) i % n, y = (long) i / n % n, z = (long) i / n / n, best = -1;
+      size_t p = (size_t) i, from = 0;
+      if (phase[p] != WALL)
+        continue;
+      for (long dz = -reach; dz <= reach; dz++)
+        for (long dy = -reach; dy <= reach; dy++)
+          for (long dx = -reach; dx <= reach; dx++)
+            {
+              long qx = x + dx, qy = y + dy, qz = z + dz, d2 = dx * dx + dy * dy + dz * dz;
+              if (!level->periodic && (qx < 0 || qy < 0 || qz < 0 || qx >= n || qy >= n || qz >= n))
+                continue;
+              size_t q = (size_t) ((((qz + n) % n) * n + (qy + n) % n) * n + (qx + n) % n);
+              if (phase[q] == DARK && (best < 0 || d2 < best))
+                {
+                  best = d2;
+                  from = q;
+                }
+            }
+      if (best < 0)
+        continue;
+      memcpy (level->value + p * TS_CHANNELS, level->value + from * TS_CHANNELS,
+              TS_CHANNELS * sizeof (float));
+      if (level->chosen)
+        level->chosen[p] = level->chosen[from];
+      for (int a = 0; a < TS_SOLID_AXES; a++)
+        if (level->source[a])
+          level->source[a][p] = level->source[a][from];
+    }
+}
+
+TsStatus
+ts_solid_wall_necks (TsSolidLevel *level, float split)
+{
+  size_t n = level->n, voxels = n * n * n, lights = 0, dims[3] = { n, n, n };
+  bool wrap[3] = { level->periodic, level->periodic, level->periodic };
+  uint8_t *phase = malloc (voxels);
+  float *distance = malloc (voxels * sizeof (float));
+  int32_t *order = malloc (voxels * sizeof (int32_t)), *parent = malloc (voxels * sizeof (int32_t));
+  TsStatus status = phase && distance && order && parent ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+  size_t darks = 0;
+
+  for (size_t p = 0; p < voxels && status == TS_OK; p++)
+    {
+      phase[p] = ts_solid_is_light (level->value + p * TS_CHANNELS, split) ? LIGHT : DARK;
+      distance[p] = phase[p] == LIGHT ? TS_DISTANCE_FAR : 0.0f;
+      parent[p] = UNSEEN;
+      darks += phase[p] == DARK;
+    }
+  /* All light: no neck, and no distance to sort by. */
+  bool necks = darks > 0;
+  if (status == TS_OK && necks)
+    status = ts_distance_transform (distance, dims, wrap);
+  if (status == TS_OK && necks)
+    status = deepest_first (phase, distance, voxels, order, &lights);
+  if (status == TS_OK && necks)
+    {
+      flood (level, phase, distance, order, lights, parent);
+      thicken (level, phase, voxels);
+      copy_dark (level, phase);
+    }
+  free (phase);
+  free (distance);
+  free (order);
+  free (parent);
+  return status;
+}

@@ -1,0 +1,133 @@
+/* The phase guide of the finest level, for exemplars whose light phase
+ * lies in separate pieces (stones in mortar, cells, beans): each
+ * exemplar pixel and each voxel carries its signed distance to the
+ * boundary between the two phases (phase-split.c), and the E-step
+ * weighs down a vote whose source lies at another distance than the
+ * voxel (estep.c). Why: the finest level's slice neighbourhoods alone
+ * erode the start's joints, and neighbouring stones merge (128^3 cells:
+ * 0.37 x the truth's light sections per slice; solid history, stop 63).
+ * The voxels' distances are taken once, from the start after its necks
+ * got walls (neck-walls.c), and held for the whole level.
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "solid.h"
+#include "engine/distance.h"
+
+#include <stdlib.h>
+
+/* Only the distances near the boundary matter: a stone's middle may copy
+ * any stone's middle. */
+static float
+clipped (float d)
+{
+  return d > TS_SOLID_PHASE_CLIP ? TS_SOLID_PHASE_CLIP : d < -TS_SOLID_PHASE_CLIP ? -TS_SOLID_PHASE_CLIP : d;
+}
+
+/* Clipped signed distances (light positive, half a sample off the
+ * boundary on either side) of the samples of `light` (1 light, 0 dark)
+ * into `out`. */
+static TsStatus
+signed_distances (const uint8_t *light, const size_t dims[3], const bool wrap[3], float *out)
+{
+  size_t count = dims[0] * dims[1] * dims[2];
+  float *to_light = malloc (count * sizeof (float));
+  TsStatus status = to_light ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+
+  for (size_t i = 0; i < count && status == TS_OK; i++)
+    {
+      out[i] = light[i] ? TS_DISTANCE_FAR : 0.0f;
+      to_light[i] = light[i] ? 0.0f : TS_DISTANCE_FAR;
+    }
+  if (status == TS_OK)
+    status = ts_distance_transform (out, dims, wrap);
+  if (status == TS_OK)
+    status = ts_distance_transform (to_light, dims, wrap);
+  for (size_t i = 0; i < count && status == TS_OK; i++)
+    out[i] = clipped (light[i] ? out[i] - 0.5f : 0.5f - to_light[i]);
+  free (to_light);
+  return status;
+}
+
+bool
+ts_solid_pieces_apart (const TsImage *ex, float split)
+{
+  size_t w = ex->width, h = ex->height, count = w * h, lights = 0, largest = 0;
+  uint8_t *seen = calloc (count, 1);
+  size_t *stack = malloc (count * sizeof (size_t));
+  bool apart = false;
+
+  /* Without the memory to look, the guide stays off: the default path. */
+  for (size_t p = 0; seen && stack && p < count; p++)
+    {
+      if (seen[p] || !ts_solid_is_light (ex->pixels + p * TS_CHANNELS, split))
+        continue;
+      size_t top = 0, size = 0;
+      stack[top++] = p;
+      seen[p] = 1;
+      while (top > 0)
+        {
+          size_t q = stack[--top], x = q % w, y = q / w;
+          size_t next[4] = { x + 1 < w ? q + 1 : q, x > 0 ? q - 1 : q, y + 1 < h ? q + w : q,
+                             y > 0 ? q - w : q };
+          size++;
+          for (int k = 0; k < 4; k++)
+            if (!seen[next[k]] && ts_solid_is_light (ex->pixels + next[k] * TS_CHANNELS, split))
+              {
+                seen[next[k]] = 1;
+                stack[top++] = next[k];
+              }
+        }
+      lights += size;
+      largest = size > largest ? size : largest;
+    }
+  if (seen && stack && lights > 0)
+    apart = (double) largest <= TS_SOLID_PIECES_APART * (double) lights;
+  free (seen);
+  free (stack);
+  return apart;
+}
+
+TsStatus
+ts_solid_phase_distances (const TsImage *ex, float split, float **out)
+{
+  size_t count = ts_image_pixel_count (ex), dims[3] = { ex->width, ex->height, 1 };
+  bool wrap[3] = { false, false, false };
+  uint8_t *light = malloc (count);
+  float *distance = malloc (count * sizeof (float));
+  TsStatus status = light && distance ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+
+  for (size_t i = 0; i < count && status == TS_OK; i++)
+    light[i] = ts_solid_is_light (ex->pixels + i * TS_CHANNELS, split);
+  if (status == TS_OK)
+    status = signed_distances (light, dims, wrap, distance);
+  free (light);
+  if (status != TS_OK)
+    {
+      free (distance);
+      return status;
+    }
+  *out = distance;
+  return TS_OK;
+}
+
+TsStatus
+ts_solid_phase_field (const TsSolidLevel *level, float split, float **out)
+{
+  size_t n = level->n, voxels = n * n * n, dims[3] = { n, n, n };
+  bool wrap[3] = { level->periodic, level->periodic, level->periodic };
+  uint8_t *light = malloc (voxels);
+  float *field = malloc (voxels * sizeof (float));
+  TsStatus status = light && field ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+
+  for (size_t p = 0; p < voxels && status == TS_OK; p++)
+    light[p] = ts_solid_is_light (level->value + p * TS_CHANNELS, split);
+  if (status == TS_OK)
+    status = signed_distances (light, dims, wrap, field);
+  free (light);
+  if (status != TS_OK)
+    {
+      free (field);
+      return status;
+    }
+  *out = field;
+  return TS_OK;
+}
