@@ -14,7 +14,6 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 /* The dark voxel a wall copies lies at most this far along each axis. */
 #define TS_SOLID_WALL_REACH 3
@@ -162,15 +161,8 @@ copy_dark (TsSolidLevel *level, const uint8_t *phase)
                   from = q;
                 }
             }
-      if (best < 0)
-        continue;
-      memcpy (level->value + p * TS_CHANNELS, level->value + from * TS_CHANNELS,
-              TS_CHANNELS * sizeof (float));
-      if (level->chosen)
-        level->chosen[p] = level->chosen[from];
-      for (int a = 0; a < TS_SOLID_AXES; a++)
-        if (level->source[a])
-          level->source[a][p] = level->source[a][from];
+      if (best >= 0)
+        ts_solid_copy_voxel (level, p, from);
     }
 }
 

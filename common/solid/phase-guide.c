@@ -86,17 +86,19 @@ ts_solid_pieces_apart (const TsImage *ex, float split)
   return apart;
 }
 
-TsStatus
-ts_solid_phase_distances (const TsImage *ex, float split, float **out)
+/* Clipped signed distances of `count` working-format pixels (a grid of
+ * dims) to the phase boundary at `split`, in a new array. */
+static TsStatus
+pixel_distances (const float *pixels, const size_t dims[3], const bool wrap[3], float split,
+                 float **out)
 {
-  size_t count = ts_image_pixel_count (ex), dims[3] = { ex->width, ex->height, 1 };
-  bool wrap[3] = { false, false, false };
+  size_t count = dims[0] * dims[1] * dims[2];
   uint8_t *light = malloc (count);
   float *distance = malloc (count * sizeof (float));
   TsStatus status = light && distance ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
 
   for (size_t i = 0; i < count && status == TS_OK; i++)
-    light[i] = ts_solid_is_light (ex->pixels + i * TS_CHANNELS, split);
+    light[i] = ts_solid_is_light (pixels + i * TS_CHANNELS, split);
   if (status == TS_OK)
     status = signed_distances (light, dims, wrap, distance);
   free (light);
@@ -110,24 +112,19 @@ ts_solid_phase_distances (const TsImage *ex, float split, float **out)
 }
 
 TsStatus
+ts_solid_phase_distances (const TsImage *ex, float split, float **out)
+{
+  size_t dims[3] = { ex->width, ex->height, 1 };
+  bool wrap[3] = { false, false, false };
+
+  return pixel_distances (ex->pixels, dims, wrap, split, out);
+}
+
+TsStatus
 ts_solid_phase_field (const TsSolidLevel *level, float split, float **out)
 {
-  size_t n = level->n, voxels = n * n * n, dims[3] = { n, n, n };
+  size_t dims[3] = { level->n, level->n, level->n };
   bool wrap[3] = { level->periodic, level->periodic, level->periodic };
-  uint8_t *light = malloc (voxels);
-  float *field = malloc (voxels * sizeof (float));
-  TsStatus status = light && field ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
 
-  for (size_t p = 0; p < voxels && status == TS_OK; p++)
-    light[p] = ts_solid_is_light (level->value + p * TS_CHANNELS, split);
-  if (status == TS_OK)
-    status = signed_distances (light, dims, wrap, field);
-  free (light);
-  if (status != TS_OK)
-    {
-      free (field);
-      return status;
-    }
-  *out = field;
-  return TS_OK;
+  return pixel_distances (level->value, dims, wrap, split, out);
 }

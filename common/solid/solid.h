@@ -404,6 +404,20 @@ void ts_solid_position_excess (TsSolidLevel *level);
 /* The first orientation with an exemplar: there is always one. */
 const TsSolidView *ts_solid_first_view (const TsSolidLevel *level);
 
+/* Voxel `to` takes voxel `from`'s value, recorded vote and sources, so
+ * aligned maps stay aligned (specks.c, neck-walls.c). */
+static inline void
+ts_solid_copy_voxel (TsSolidLevel *level, size_t to, size_t from)
+{
+  memcpy (level->value + to * TS_CHANNELS, level->value + from * TS_CHANNELS,
+          TS_CHANNELS * sizeof (float));
+  if (level->chosen)
+    level->chosen[to] = level->chosen[from];
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    if (level->source[a])
+      level->source[a][to] = level->source[a][from];
+}
+
 /* After the finest level: each small
  * face-connected piece on one side of the phase split copies a face
  * neighbour on the other side (specks.c). */

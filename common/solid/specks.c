@@ -12,7 +12,6 @@
 #include "solid.h"
 
 #include <stdlib.h>
-#include <string.h>
 
 /* The benchmark's specks are slice pieces of at most 4 pixels
  * (benchmarks/phase-thickness.h). 128^3 cells with the cell structure,
@@ -96,13 +95,7 @@ ts_solid_remove_specks (TsSolidLevel *level)
           size_t q = face_neighbour (level, p, k);
           if (light[q] == light[p] || speck[q])
             continue;
-          memcpy (level->value + p * TS_CHANNELS, level->value + q * TS_CHANNELS,
-                  TS_CHANNELS * sizeof (float));
-          if (level->chosen)
-            level->chosen[p] = level->chosen[q];
-          for (int a = 0; a < TS_SOLID_AXES; a++)
-            if (level->source[a])
-              level->source[a][p] = level->source[a][q];
+          ts_solid_copy_voxel (level, p, q);
           break;
         }
     }
