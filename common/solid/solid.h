@@ -57,7 +57,8 @@ ts_solid_is_light (const float *pixel, float split)
 /* The phase guide (phase-guide.c) and the walls at necks (neck-walls.c),
  * at the finest level of the default path, when the exemplar's largest
  * 4-connected light piece holds at most TS_SOLID_PIECES_APART of its
- * light pixels. Whole bundled images (solid history, stop 63): the cells
+ * light pixels. The bundled images, at most their central 128 x 128
+ * (solid history, stop 63): the cells
  * truth's exemplar 0.04, java 0.03, burlap 0.08, granite1 0.17, stone33
  * 0.29, rock, bluemetal, land1 and bark 0.33-0.35, cracked, canyons2 and
  * ground1 0.38-0.42, 3dweave 0.46 (on); parque1 0.501, wood1 0.70,
