@@ -95,6 +95,32 @@ signed_distance (const TsImage *ex, const uint8_t *light, size_t i)
   return fmaxf ((light[i] ? 1.0f : -1.0f) * (sqrtf ((float) best) - 0.5f), GUIDE_MIN_DISTANCE);
 }
 
+typedef struct
+{
+  const TsImage *ex;
+  float          dark_below;
+  size_t        *sections, *dark_sections;
+  float         *tone;
+} Sections;
+
+/* One light piece: a section if it has GUIDE_MIN_SECTION pixels. */
+static void
+add_section (const size_t *pixels, size_t area, void *data)
+{
+  Sections *s = data;
+  double sum = 0.0;
+
+  for (size_t k = 0; k < area; k++)
+    sum += s->ex->pixels[pixels[k] * TS_CHANNELS];
+  if (area < GUIDE_MIN_SECTION)
+    return;
+  (*s->sections)++;
+  if (s->dark_sections)
+    *s->dark_sections += sum / (double) area < s->dark_below;
+  for (size_t k = 0; s->tone && k < area; k++)
+    s->tone[pixels[k]] = (float) (sum / (double) area);
+}
+
 /* Light components of at least GUIDE_MIN_SECTION pixels (4-connected):
  * their number; if `dark_sections` is given, how many of them are
  * darker than `dark_below` on average; and, if `tone` is given, each of
@@ -104,57 +130,15 @@ static TsStatus
 count_sections (const TsImage *ex, const uint8_t *light, float dark_below, size_t *sections,
                 size_t *dark_sections, float *tone)
 {
-  size_t w = ex->width, count = w * ex->height;
-  uint8_t *seen = calloc (count, 1);
-  size_t *stack = malloc (count * sizeof (size_t));
-  size_t *member = malloc (count * sizeof (size_t));
+  Sections s = { ex, dark_below, sections, dark_sections, tone };
+  size_t count = ex->width * ex->height;
 
   *sections = 0;
   if (dark_sections)
     *dark_sections = 0;
-  if (!seen || !stack || !member)
-    {
-      free (seen);
-      free (stack);
-      free (member);
-      return TS_ERROR_OUT_OF_MEMORY;
-    }
   for (size_t i = 0; tone && i < count; i++)
     tone[i] = NAN;
-  for (size_t i = 0; i < count; i++)
-    {
-      size_t top = 0, area = 0;
-      double sum = 0.0;
-      if (!light[i] || seen[i])
-        continue;
-      seen[i] = 1;
-      stack[top++] = i;
-      while (top > 0)
-        {
-          size_t p = stack[--top], x = p % w, y = p / w;
-          size_t next[4] = { x > 0 ? p - 1 : p, x + 1 < w ? p + 1 : p,
-                             y > 0 ? p - w : p, y + 1 < ex->height ? p + w : p };
-          member[area++] = p;
-          sum += ex->pixels[p * TS_CHANNELS];
-          for (int k = 0; k < 4; k++)
-            if (light[next[k]] && !seen[next[k]])
-              {
-                seen[next[k]] = 1;
-                stack[top++] = next[k];
-              }
-        }
-      if (area < GUIDE_MIN_SECTION)
-        continue;
-      (*sections)++;
-      if (dark_sections)
-        *dark_sections += sum / (double) area < dark_below;
-      for (size_t k = 0; tone && k < area; k++)
-        tone[member[k]] = (float) (sum / (double) area);
-    }
-  free (seen);
-  free (stack);
-  free (member);
-  return TS_OK;
+  return ts_solid_mask_pieces (light, ex->width, ex->height, add_section, &s);
 }
 
 /* Whether pixel (x, y) is darker than `joint` or lies within

@@ -109,7 +109,7 @@ estimate_bytes (const TsSolidParams *params, const TsImage *const exemplars[3], 
         if (params->cell_structure)
           bytes += ex * 8.0;                        /* stone tones, sorted shades */
         else
-          bytes += ex * 13.0; /* phase distances; the light pieces' scratch */
+          bytes += ex * 22.0; /* phase distances; the light pieces' scratch */
       }
   /* Finest level: the result volume (which holds the values), three
    * sources, the matches of three orientations on a grid of spacing 2 in

@@ -47,42 +47,36 @@ signed_distances (const uint8_t *light, const size_t dims[3], const bool wrap[3]
   return status;
 }
 
+typedef struct
+{
+  size_t lights, largest;
+} Pieces;
+
+static void
+add_piece (const size_t *pixels, size_t area, void *data)
+{
+  Pieces *p = data;
+
+  (void) pixels;
+  p->lights += area;
+  p->largest = area > p->largest ? area : p->largest;
+}
+
 bool
 ts_solid_pieces_apart (const TsImage *ex, float split)
 {
-  size_t w = ex->width, h = ex->height, count = w * h, lights = 0, largest = 0;
-  uint8_t *seen = calloc (count, 1);
-  size_t *stack = malloc (count * sizeof (size_t));
+  size_t count = ts_image_pixel_count (ex);
+  uint8_t *light = malloc (count);
+  Pieces pieces = { 0, 0 };
   bool apart = false;
 
   /* Without the memory to look, the guide stays off: the default path. */
-  for (size_t p = 0; seen && stack && p < count; p++)
-    {
-      if (seen[p] || !ts_solid_is_light (ex->pixels + p * TS_CHANNELS, split))
-        continue;
-      size_t top = 0, size = 0;
-      stack[top++] = p;
-      seen[p] = 1;
-      while (top > 0)
-        {
-          size_t q = stack[--top], x = q % w, y = q / w;
-          size_t next[4] = { x + 1 < w ? q + 1 : q, x > 0 ? q - 1 : q, y + 1 < h ? q + w : q,
-                             y > 0 ? q - w : q };
-          size++;
-          for (int k = 0; k < 4; k++)
-            if (!seen[next[k]] && ts_solid_is_light (ex->pixels + next[k] * TS_CHANNELS, split))
-              {
-                seen[next[k]] = 1;
-                stack[top++] = next[k];
-              }
-        }
-      lights += size;
-      largest = size > largest ? size : largest;
-    }
-  if (seen && stack && lights > 0)
-    apart = (double) largest <= TS_SOLID_PIECES_APART * (double) lights;
-  free (seen);
-  free (stack);
+  for (size_t i = 0; light && i < count; i++)
+    light[i] = ts_solid_is_light (ex->pixels + i * TS_CHANNELS, split);
+  if (light && ts_solid_mask_pieces (light, ex->width, ex->height, add_piece, &pieces) == TS_OK
+      && pieces.lights > 0)
+    apart = (double) pieces.largest <= TS_SOLID_PIECES_APART * (double) pieces.lights;
+  free (light);
   return apart;
 }
 

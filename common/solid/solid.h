@@ -54,6 +54,13 @@ ts_solid_is_light (const float *pixel, float split)
   return pixel[3] > 0.0f && pixel[0] >= split;
 }
 
+/* Calls `piece` once for each 4-connected piece of the nonzero pixels
+ * of a w x h mask, with the piece's pixels in the order a depth-first
+ * walk finds them (pieces.c). */
+typedef void (*TsSolidPieceFunc) (const size_t *pixels, size_t area, void *data);
+TsStatus ts_solid_mask_pieces (const uint8_t *mask, size_t w, size_t h, TsSolidPieceFunc piece,
+                               void *data);
+
 /* The phase guide (phase-guide.c) and the walls at necks (neck-walls.c),
  * at the finest level of the default path, when the exemplar's largest
  * 4-connected light piece holds at most TS_SOLID_PIECES_APART of its
