@@ -1,13 +1,14 @@
-/* Walls at the necks of the light phase, once, at the start of the
- * finest level, for exemplars whose light phase lies in separate pieces
- * (phase-guide.c). The start (the coarser level's layout, upsampled)
- * merges neighbouring stones through light necks; a watershed of the
- * light voxels' distance to the dark phase finds them: flooding from the
- * deepest voxels down, two basins whose peaks both rise at least
- * TS_SOLID_NECK_HEIGHT above the voxel where they meet stay apart, and
- * that voxel becomes wall. The walls, thickened by one voxel, copy the
- * nearest dark voxel; the phase guide then holds them through the
- * level, whose slice neighbourhoods turn them into joints.
+/* Walls at the necks of the phase in pieces, once, at the start of the
+ * finest level, for exemplars whose light phase, or else dark phase,
+ * lies in separate pieces (phase-guide.c): the piece phase, stones or
+ * spots, and the ground phase around them. The start (the coarser
+ * level's layout, upsampled) merges neighbouring stones through necks; a
+ * watershed of the piece voxels' distance to the ground finds them:
+ * flooding from the deepest voxels down, two basins whose peaks both
+ * rise at least TS_SOLID_NECK_HEIGHT above the voxel where they meet
+ * stay apart, and that voxel becomes wall. The walls, thickened by one
+ * voxel, copy the nearest ground voxel; the phase guide then holds them
+ * through the level, whose slice neighbourhoods turn them into joints.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/distance.h"
@@ -15,11 +16,11 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* The dark voxel a wall copies lies at most this far along each axis. */
+/* The ground voxel a wall copies lies at most this far along each axis. */
 #define TS_SOLID_WALL_REACH 3
 
-#define DARK 0
-#define LIGHT 1
+#define GROUND 0
+#define PIECE 1
 #define WALL 2
 
 #define UNSEEN (-1)
@@ -36,15 +37,15 @@ find_root (int32_t *parent, int32_t p)
   return p;
 }
 
-/* The light voxels by falling distance, ties by index: a counting sort
+/* The piece voxels by falling distance, ties by index: a counting sort
  * on the squared distance, an integer. */
 static TsStatus
 deepest_first (const uint8_t *phase, const float *distance, size_t voxels, int32_t *order,
-               size_t *lights)
+               size_t *count)
 {
   size_t keys = 1;
   for (size_t p = 0; p < voxels; p++)
-    if (phase[p] == LIGHT)
+    if (phase[p] == PIECE)
       {
         size_t k = (size_t) lroundf (distance[p] * distance[p]);
         keys = k + 1 > keys ? k + 1 : keys;
@@ -53,28 +54,28 @@ deepest_first (const uint8_t *phase, const float *distance, size_t voxels, int32
   if (!start)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t p = 0; p < voxels; p++)
-    if (phase[p] == LIGHT)
+    if (phase[p] == PIECE)
       start[keys - 1 - (size_t) lroundf (distance[p] * distance[p]) + 1]++;
   for (size_t k = 0; k < keys; k++)
     start[k + 1] += start[k];
-  *lights = start[keys];
+  *count = start[keys];
   for (size_t p = 0; p < voxels; p++)
-    if (phase[p] == LIGHT)
+    if (phase[p] == PIECE)
       order[start[keys - 1 - (size_t) lroundf (distance[p] * distance[p])]++] = (int32_t) p;
   free (start);
   return TS_OK;
 }
 
-/* Floods the light voxels in `order`; marks the voxels where two
+/* Floods the piece voxels in `order`; marks the voxels where two
  * distinct basins meet WALL in `phase`. A basin's root is its deepest
  * voxel, so its peak is distance[root]. */
 static void
 flood (const TsSolidLevel *level, uint8_t *phase, const float *distance, const int32_t *order,
-       size_t lights, int32_t *parent)
+       size_t count_in_order, int32_t *parent)
 {
   size_t n = level->n;
 
-  for (size_t i = 0; i < lights; i++)
+  for (size_t i = 0; i < count_in_order; i++)
     {
       int32_t p = order[i], roots[6], deepest = -1;
       int count = 0;
@@ -110,7 +111,7 @@ flood (const TsSolidLevel *level, uint8_t *phase, const float *distance, const i
     }
 }
 
-/* Light face neighbours of the walls become walls too. */
+/* Piece face neighbours of the walls become walls too. */
 static void
 thicken (const TsSolidLevel *level, uint8_t *phase, size_t voxels)
 {
@@ -124,7 +125,7 @@ thicken (const TsSolidLevel *level, uint8_t *phase, size_t voxels)
           {
             size_t q = ts_solid_face_neighbour (level, xyz, k / 2, k & 1);
             /* Marked apart from the walls, so the new ones do not grow. */
-            if (phase[q] == LIGHT)
+            if (phase[q] == PIECE)
               phase[q] = WALL + 1;
           }
       }
@@ -133,10 +134,10 @@ thicken (const TsSolidLevel *level, uint8_t *phase, size_t voxels)
       phase[p] = WALL;
 }
 
-/* Each wall copies the nearest dark voxel within reach (the first in
- * scan order among equals): reads dark voxels only, writes walls only. */
+/* Each wall copies the nearest ground voxel within reach (the first in
+ * scan order among equals): reads ground voxels only, writes walls only. */
 static void
-copy_dark (TsSolidLevel *level, const uint8_t *phase)
+copy_ground (TsSolidLevel *level, const uint8_t *phase)
 {
   long n = (long) level->n, reach = TS_SOLID_WALL_REACH;
 
@@ -155,7 +156,7 @@ copy_dark (TsSolidLevel *level, const uint8_t *phase)
               if (!level->periodic && (qx < 0 || qy < 0 || qz < 0 || qx >= n || qy >= n || qz >= n))
                 continue;
               size_t q = (size_t) ((((qz + n) % n) * n + (qy + n) % n) * n + (qx + n) % n);
-              if (phase[q] == DARK && (best < 0 || d2 < best))
+              if (phase[q] == GROUND && (best < 0 || d2 < best))
                 {
                   best = d2;
                   from = q;
@@ -167,34 +168,36 @@ copy_dark (TsSolidLevel *level, const uint8_t *phase)
 }
 
 TsStatus
-ts_solid_wall_necks (TsSolidLevel *level, float split)
+ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces)
 {
-  size_t n = level->n, voxels = n * n * n, lights = 0, dims[3] = { n, n, n };
+  size_t n = level->n, voxels = n * n * n, in_pieces = 0, dims[3] = { n, n, n };
   bool wrap[3] = { level->periodic, level->periodic, level->periodic };
   uint8_t *phase = malloc (voxels);
   float *distance = malloc (voxels * sizeof (float));
   int32_t *order = malloc (voxels * sizeof (int32_t)), *parent = malloc (voxels * sizeof (int32_t));
   TsStatus status = phase && distance && order && parent ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
-  size_t darks = 0;
+  size_t grounds = 0;
 
   for (size_t p = 0; p < voxels && status == TS_OK; p++)
     {
-      phase[p] = ts_solid_is_light (level->value + p * TS_CHANNELS, split) ? LIGHT : DARK;
-      distance[p] = phase[p] == LIGHT ? TS_DISTANCE_FAR : 0.0f;
+      const float *v = level->value + p * TS_CHANNELS;
+      bool light = ts_solid_is_light (v, split);
+      phase[p] = (pieces == TS_SOLID_LIGHT_PIECES ? light : v[3] > 0.0f && !light) ? PIECE : GROUND;
+      distance[p] = phase[p] == PIECE ? TS_DISTANCE_FAR : 0.0f;
       parent[p] = UNSEEN;
-      darks += phase[p] == DARK;
+      grounds += phase[p] == GROUND;
     }
-  /* All light: no neck, and no distance to sort by. */
-  bool necks = darks > 0;
+  /* All pieces: no neck, and no distance to sort by. */
+  bool necks = pieces != TS_SOLID_NO_PIECES && grounds > 0;
   if (status == TS_OK && necks)
     status = ts_distance_transform (distance, dims, wrap);
   if (status == TS_OK && necks)
-    status = deepest_first (phase, distance, voxels, order, &lights);
+    status = deepest_first (phase, distance, voxels, order, &in_pieces);
   if (status == TS_OK && necks)
     {
-      flood (level, phase, distance, order, lights, parent);
+      flood (level, phase, distance, order, in_pieces, parent);
       thicken (level, phase, voxels);
-      copy_dark (level, phase);
+      copy_ground (level, phase);
     }
   free (phase);
   free (distance);

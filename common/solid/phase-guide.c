@@ -1,5 +1,6 @@
 /* The phase guide of the finest level, for exemplars whose light phase
- * lies in separate pieces (stones in mortar, cells, beans): each
+ * lies in separate pieces (stones in mortar, cells, beans), or else
+ * their dark phase (spots on a ground: blobs, a leopard's fur): each
  * exemplar pixel and each voxel carries its signed distance to the
  * boundary between the two phases (phase-split.c), and the E-step
  * weighs down a vote whose source lies at another distance than the
@@ -49,7 +50,7 @@ signed_distances (const uint8_t *light, const size_t dims[3], const bool wrap[3]
 
 typedef struct
 {
-  size_t lights, largest;
+  size_t pixels, largest; /* of the phase looked at, and of its largest piece */
 } Pieces;
 
 static void
@@ -58,26 +59,40 @@ add_piece (const size_t *pixels, size_t area, void *data)
   Pieces *p = data;
 
   (void) pixels;
-  p->lights += area;
+  p->pixels += area;
   p->largest = area > p->largest ? area : p->largest;
 }
 
-bool
-ts_solid_pieces_apart (const TsImage *ex, float split)
+/* Whether the opaque pixels on one side of the split (`light` or dark)
+ * lie apart: their largest 4-connected piece holds at most
+ * TS_SOLID_PIECES_APART of them. Without the memory to look, no: the
+ * default path. */
+static bool
+side_apart (const TsImage *ex, float split, bool light)
 {
   size_t count = ts_image_pixel_count (ex);
-  uint8_t *light = malloc (count);
+  uint8_t *mask = malloc (count);
   Pieces pieces = { 0, 0 };
   bool apart = false;
 
-  /* Without the memory to look, the guide stays off: the default path. */
-  for (size_t i = 0; light && i < count; i++)
-    light[i] = ts_solid_is_light (ex->pixels + i * TS_CHANNELS, split);
-  if (light && ts_solid_mask_pieces (light, ex->width, ex->height, add_piece, &pieces) == TS_OK
-      && pieces.lights > 0)
-    apart = (double) pieces.largest <= TS_SOLID_PIECES_APART * (double) pieces.lights;
-  free (light);
+  for (size_t i = 0; mask && i < count; i++)
+    {
+      const float *p = ex->pixels + i * TS_CHANNELS;
+      mask[i] = p[3] > 0.0f && ts_solid_is_light (p, split) == light;
+    }
+  if (mask && ts_solid_mask_pieces (mask, ex->width, ex->height, add_piece, &pieces) == TS_OK
+      && pieces.pixels > 0)
+    apart = (double) pieces.largest <= TS_SOLID_PIECES_APART * (double) pieces.pixels;
+  free (mask);
   return apart;
+}
+
+TsSolidPieces
+ts_solid_phase_in_pieces (const TsImage *ex, float split)
+{
+  return side_apart (ex, split, true) ? TS_SOLID_LIGHT_PIECES
+         : side_apart (ex, split, false) ? TS_SOLID_DARK_PIECES
+                                          : TS_SOLID_NO_PIECES;
 }
 
 /* Clipped signed distances of `count` working-format pixels (a grid of

@@ -64,12 +64,13 @@ TsStatus ts_solid_mask_pieces (const uint8_t *mask, size_t w, size_t h, TsSolidP
 /* The phase guide (phase-guide.c) and the walls at necks (neck-walls.c),
  * at the finest level of the default path, when the exemplar's largest
  * 4-connected light piece holds at most TS_SOLID_PIECES_APART of its
- * light pixels. The bundled images, at most their central 128 x 128
- * (solid history, stop 63): the cells
- * truth's exemplar 0.04, java 0.03, burlap 0.08, granite1 0.17, stone33
- * 0.29, rock, bluemetal, land1 and bark 0.33-0.35, cracked, canyons2 and
- * ground1 0.38-0.42, 3dweave 0.46 (on); parque1 0.501, wood1 0.70,
- * brick 0.73, leopard 0.93, the blobs and grains truths' 0.97 (off). */
+ * light pixels, or else its largest dark piece of its dark pixels. The
+ * bundled images, at most their central 128 x 128 (solid history, stops
+ * 63 and 64), light: the cells truth's exemplar 0.04, java 0.03, burlap
+ * 0.08, granite1 0.17, stone33 0.29, rock, bluemetal, land1 and bark
+ * 0.33-0.35, cracked, canyons2 and ground1 0.38-0.42, 3dweave 0.46 (on);
+ * then dark: leopard and the grains truth's 0.09, the blobs truth's
+ * 0.17, brick 0.25, wood1 0.49 (on); parque1 0.501 and 0.62 (off). */
 #define TS_SOLID_PIECES_APART 0.5
 /* A vote whose source's signed distance to the phase boundary differs
  * by z from the voxel's weighs 1 / (1 + (z / SIGMA)^2); distances are
@@ -431,11 +432,21 @@ ts_solid_copy_voxel (TsSolidLevel *level, size_t to, size_t from)
  * neighbour on the other side (specks.c). */
 TsStatus ts_solid_remove_specks (TsSolidLevel *level);
 
-/* At the finest level's start, with the phase guide: the light voxels
- * where two deep basins of the light phase meet, and their light face
- * neighbours, copy the nearest dark voxel (neck-walls.c). */
-TsStatus ts_solid_wall_necks (TsSolidLevel *level, float split);
-bool ts_solid_pieces_apart (const TsImage *ex, float split);
+/* Which phase of an exemplar, at its phase split, lies in separate
+ * pieces (phase-guide.c): the light one is asked first. */
+typedef enum
+{
+  TS_SOLID_NO_PIECES,
+  TS_SOLID_LIGHT_PIECES,
+  TS_SOLID_DARK_PIECES
+} TsSolidPieces;
+
+/* At the finest level's start, with the phase guide: the voxels where
+ * two deep basins of the phase in pieces meet, and their face
+ * neighbours of that phase, copy the nearest voxel of the other phase
+ * (neck-walls.c). */
+TsStatus ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces);
+TsSolidPieces ts_solid_phase_in_pieces (const TsImage *ex, float split);
 /* Every pixel's clipped signed distance (light positive) to the phase
  * boundary at `split`, in a new array. */
 TsStatus ts_solid_phase_distances (const TsImage *ex, float split, float **out);

@@ -481,18 +481,19 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
 }
 
 /* At the finest level's start on the default path, if the exemplar's
- * light phase lies in separate pieces: walls at the start's necks
+ * light or dark phase lies in separate pieces: walls at the start's necks
  * (neck-walls.c), then the phase guide that holds them (phase-guide.c). */
 static TsStatus
 guide_phases (Run *run)
 {
   TsSolidLevel *l = &run->level;
   const TsSolidView *first = ts_solid_first_view (l);
+  TsSolidPieces pieces = ts_solid_phase_in_pieces (first->exemplar, first->phase_split);
   TsStatus status;
 
-  if (!ts_solid_pieces_apart (first->exemplar, first->phase_split))
+  if (pieces == TS_SOLID_NO_PIECES)
     return TS_OK;
-  status = ts_solid_wall_necks (l, first->phase_split);
+  status = ts_solid_wall_necks (l, first->phase_split, pieces);
   for (size_t e = 0; e < run->exemplars && status == TS_OK; e++)
     {
       Exemplar *ex = &run->exemplar[e];

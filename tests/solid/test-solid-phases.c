@@ -1,6 +1,7 @@
 /* The phase guide's parts (phase-guide.c, neck-walls.c): which
- * exemplars turn it on, the walls that part two light balls joined by a
- * neck and leave a lone ball alone, and the clipped signed distances. */
+ * exemplars turn it on and for which phase, the walls that part two
+ * balls (light on dark, or dark on light) joined by a neck and leave a
+ * lone ball alone, and the clipped signed distances. */
 #include "test-util.h"
 #include "solid/solid.h"
 
@@ -38,19 +39,34 @@ test_gate (void)
 {
   TsImage img;
   discs (&img, 48, true);
-  CHECK (ts_solid_pieces_apart (&img, SPLIT), "light discs on dark ground: pieces apart");
+  CHECK (ts_solid_phase_in_pieces (&img, SPLIT) == TS_SOLID_LIGHT_PIECES,
+         "light discs on dark ground: the light phase in pieces");
   free (img.pixels);
   discs (&img, 48, false);
-  CHECK (!ts_solid_pieces_apart (&img, SPLIT), "dark discs on light ground: one light piece");
+  CHECK (ts_solid_phase_in_pieces (&img, SPLIT) == TS_SOLID_DARK_PIECES,
+         "dark discs on light ground: the dark phase in pieces");
+  /* Light left half, dark right half: each phase one piece. */
+  for (size_t i = 0; i < 48 * 48; i++)
+    img.pixels[i * TS_CHANNELS] = i % 48 < 24 ? LIGHT_L : DARK_L;
+  CHECK (ts_solid_phase_in_pieces (&img, SPLIT) == TS_SOLID_NO_PIECES, "two halves: no pieces");
+  /* Transparent pixels are neither phase: dark discs on a transparent
+   * ground are still dark pieces, light ones none. */
+  discs (&img, 48, false);
+  for (size_t i = 0; i < 48 * 48; i++)
+    if (img.pixels[i * TS_CHANNELS] == LIGHT_L)
+      img.pixels[i * TS_CHANNELS + 3] = 0.0f;
+  CHECK (ts_solid_phase_in_pieces (&img, SPLIT) == TS_SOLID_DARK_PIECES,
+         "dark discs on a transparent ground: the dark phase in pieces");
   free (img.pixels);
 }
 
 #define N 32
 
 /* A periodic N^3 level, dark but for balls of radius 6 at (cx, 16, 16),
- * and a light rod of radius 1 along x between them if `neck`. */
+ * and a light rod of radius 1 along x between them if `neck`; light and
+ * dark swapped if `dark_balls`. */
 static float *
-balls (TsSolidLevel *level, const float *cx, size_t count, bool neck)
+balls (TsSolidLevel *level, const float *cx, size_t count, bool neck, bool dark_balls)
 {
   float *value = calloc ((size_t) N * N * N * TS_CHANNELS, sizeof (float));
   CHECK (value != NULL, "alloc");
@@ -65,22 +81,22 @@ balls (TsSolidLevel *level, const float *cx, size_t count, bool neck)
                 && x <= cx[count - 1];
       for (size_t b = 0; b < count; b++)
         in = in || (x - cx[b]) * (x - cx[b]) + (y - 16.0f) * (y - 16.0f) + (z - 16.0f) * (z - 16.0f) <= 36.0f;
-      value[p * TS_CHANNELS] = in ? LIGHT_L : DARK_L;
+      value[p * TS_CHANNELS] = in != dark_balls ? LIGHT_L : DARK_L;
       value[p * TS_CHANNELS + 3] = 1.0f;
     }
   return value;
 }
 
-/* 6-connected light pieces of the level. */
+/* 6-connected pieces of the level's light (or dark) voxels. */
 static size_t
-light_pieces (const TsSolidLevel *level)
+phase_pieces (const TsSolidLevel *level, bool light)
 {
   size_t voxels = (size_t) N * N * N, pieces = 0;
   uint8_t *seen = calloc (voxels, 1);
   size_t *stack = malloc (voxels * sizeof (size_t));
   for (size_t p0 = 0; seen && stack && p0 < voxels; p0++)
     {
-      if (seen[p0] || !ts_solid_is_light (level->value + p0 * TS_CHANNELS, SPLIT))
+      if (seen[p0] || ts_solid_is_light (level->value + p0 * TS_CHANNELS, SPLIT) != light)
         continue;
       size_t top = 0;
       pieces++;
@@ -92,7 +108,7 @@ light_pieces (const TsSolidLevel *level)
           for (int k = 0; k < 6; k++)
             {
               size_t q = ts_solid_face_neighbour (level, xyz, k / 2, k & 1);
-              if (!seen[q] && ts_solid_is_light (level->value + q * TS_CHANNELS, SPLIT))
+              if (!seen[q] && ts_solid_is_light (level->value + q * TS_CHANNELS, SPLIT) == light)
                 {
                   seen[q] = 1;
                   stack[top++] = q;
@@ -105,45 +121,56 @@ light_pieces (const TsSolidLevel *level)
   return pieces;
 }
 
+/* Two balls joined by a neck, then a lone ball, of the phase in pieces
+ * (light on dark, or dark on light). */
 static void
-test_walls (void)
+test_walls (bool dark_balls)
 {
   TsSolidLevel level;
   const float two[2] = { 9.0f, 23.0f }, one[1] = { 16.0f };
+  TsSolidPieces pieces = dark_balls ? TS_SOLID_DARK_PIECES : TS_SOLID_LIGHT_PIECES;
+  float ball_l = dark_balls ? DARK_L : LIGHT_L;
+  const char *kind = dark_balls ? "dark balls" : "light balls";
 
-  float *value = balls (&level, two, 2, true);
-  CHECK (light_pieces (&level) == 1, "the neck joins the balls: %zu pieces", light_pieces (&level));
-  CHECK (ts_solid_wall_necks (&level, SPLIT) == TS_OK, "walls");
-  CHECK (light_pieces (&level) == 2, "a wall parts the balls: %zu pieces", light_pieces (&level));
-  size_t deep_light = 0;
+  float *value = balls (&level, two, 2, true, dark_balls);
+  CHECK (phase_pieces (&level, !dark_balls) == 1, "%s: the neck joins them: %zu pieces", kind,
+         phase_pieces (&level, !dark_balls));
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces) == TS_OK, "%s: walls", kind);
+  CHECK (phase_pieces (&level, !dark_balls) == 2, "%s: a wall parts them: %zu pieces", kind,
+         phase_pieces (&level, !dark_balls));
+  CHECK (phase_pieces (&level, dark_balls) == 1, "%s: the ground stays one piece: %zu", kind,
+         phase_pieces (&level, dark_balls));
+  size_t deep = 0;
   for (size_t p = 0; p < (size_t) N * N * N; p++)
     {
       float x = (float) (p % N), y = (float) (p / N % N), z = (float) (p / N / N);
       for (int b = 0; b < 2; b++)
-        deep_light += (x - two[b]) * (x - two[b]) + (y - 16.0f) * (y - 16.0f) + (z - 16.0f) * (z - 16.0f) <= 9.0f
-                      && value[p * TS_CHANNELS] == LIGHT_L;
+        deep += (x - two[b]) * (x - two[b]) + (y - 16.0f) * (y - 16.0f) + (z - 16.0f) * (z - 16.0f) <= 9.0f
+                && value[p * TS_CHANNELS] == ball_l;
     }
-  CHECK (deep_light == 2 * 123, "the balls' cores stay light: %zu of %d voxels", deep_light, 2 * 123);
+  CHECK (deep == 2 * 123, "%s: their cores stay as they were: %zu of %d voxels", kind, deep, 2 * 123);
   free (value);
 
-  value = balls (&level, one, 1, false);
+  value = balls (&level, one, 1, false, dark_balls);
   float *before = malloc ((size_t) N * N * N * TS_CHANNELS * sizeof (float));
   CHECK (before != NULL, "alloc");
   if (before)
     {
       memcpy (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float));
-      CHECK (ts_solid_wall_necks (&level, SPLIT) == TS_OK, "walls, one ball");
+      CHECK (ts_solid_wall_necks (&level, SPLIT, pieces) == TS_OK, "%s: walls, one ball", kind);
       CHECK (memcmp (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float)) == 0,
-             "a lone ball has no neck: nothing changes");
+             "%s: a lone ball has no neck: nothing changes", kind);
     }
   free (before);
   free (value);
 
-  /* All light: no dark voxel to measure from, and nothing to do. */
-  value = balls (&level, one, 0, false);
+  /* All of the pieces' phase: no ground voxel to measure from, and
+   * nothing to do. */
+  value = balls (&level, one, 0, false, dark_balls);
   for (size_t p = 0; p < (size_t) N * N * N; p++)
-    value[p * TS_CHANNELS] = LIGHT_L;
-  CHECK (ts_solid_wall_necks (&level, SPLIT) == TS_OK && light_pieces (&level) == 1, "all light");
+    value[p * TS_CHANNELS] = ball_l;
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces) == TS_OK && phase_pieces (&level, !dark_balls) == 1,
+         "%s: all one phase", kind);
   free (value);
 }
 
@@ -152,7 +179,7 @@ test_field (void)
 {
   TsSolidLevel level;
   const float one[1] = { 16.0f };
-  float *value = balls (&level, one, 1, false), *field = NULL;
+  float *value = balls (&level, one, 1, false, false), *field = NULL;
 
   CHECK (ts_solid_phase_field (&level, SPLIT, &field) == TS_OK, "field");
   if (field)
@@ -208,7 +235,8 @@ int
 main (void)
 {
   test_gate ();
-  test_walls ();
+  test_walls (false);
+  test_walls (true);
   test_field ();
   test_threads ();
   return test_finish ("test-solid-phases");
