@@ -49,6 +49,7 @@ test_gate (void)
   for (size_t i = 0; i < 48 * 48; i++)
     img.pixels[i * TS_CHANNELS] = i % 48 < 24 ? LIGHT_L : DARK_L;
   CHECK (ts_solid_phase_in_pieces (&img, SPLIT) == TS_SOLID_NO_PIECES, "two halves: no pieces");
+  free (img.pixels);
   /* Transparent pixels are neither phase: dark discs on a transparent
    * ground are still dark pieces, light ones none. */
   discs (&img, 48, false);
