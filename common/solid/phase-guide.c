@@ -95,6 +95,15 @@ ts_solid_phase_in_pieces (const TsImage *ex, float split)
                                           : TS_SOLID_NO_PIECES;
 }
 
+TsSolidPieces
+ts_solid_exemplar_pieces (const TsImage *ex)
+{
+  float split, joint;
+
+  ts_solid_splits (ex, &split, &joint);
+  return ts_solid_phase_in_pieces (ex, split);
+}
+
 /* Clipped signed distances of `count` working-format pixels (a grid of
  * dims) to the phase boundary at `split`, in a new array. */
 static TsStatus

@@ -344,9 +344,11 @@ ts_solid_match_index (size_t cu, size_t cv, size_t t, size_t ju, size_t jv)
 /* The passes of volume level `level` of `levels`, of edge n (plan.c):
  * the 2D schedule for the smallest exemplar's ex_w x ex_h at that
  * level, with the solid engine's neighbourhood sizes, iterations and
- * spacings. */
+ * spacings; `joints`: the exemplar's light phase lies in separate pieces
+ * (ts_solid_exemplar_pieces), whose joints the finest level iterates
+ * longer to close. */
 void ts_solid_plan_level (const TsSolidParams *sp, size_t level, size_t levels, size_t n,
-                          size_t ex_w, size_t ex_h, TsLevelPlan *plan);
+                          size_t ex_w, size_t ex_h, bool joints, TsLevelPlan *plan);
 /* Leaves of the exemplar index a query visits at `quality` (1 .. 10). */
 size_t ts_solid_index_leaves (int quality);
 
@@ -447,6 +449,8 @@ typedef enum
  * (neck-walls.c). */
 TsStatus ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces);
 TsSolidPieces ts_solid_phase_in_pieces (const TsImage *ex, float split);
+/* The same at the exemplar's own phase split (ts_solid_splits). */
+TsSolidPieces ts_solid_exemplar_pieces (const TsImage *ex);
 /* Every pixel's clipped signed distance (light positive) to the phase
  * boundary at `split`, in a new array. */
 TsStatus ts_solid_phase_distances (const TsImage *ex, float split, float **out);

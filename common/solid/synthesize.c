@@ -70,6 +70,8 @@ typedef struct
   TsSolidSource       *own_sources; /* the position histogram's, if no caller's */
   TsSolidCellGuide     cells;       /* with params->cell_structure */
   float               *phase_field; /* finest level, with the phase guide */
+  TsSolidPieces        pieces;      /* the phase guide's gate, at the finest
+                                       level of the first view's exemplar */
 } Run;
 
 static bool
@@ -114,7 +116,8 @@ plan_level (const Run *run, size_t level, TsLevelPlan *plan)
       ex_w = ex->width < ex_w ? ex->width : ex_w;
       ex_h = ex->height < ex_h ? ex->height : ex_h;
     }
-  ts_solid_plan_level (run->params, level, run->levels, n, ex_w, ex_h, plan);
+  ts_solid_plan_level (run->params, level, run->levels, n, ex_w, ex_h,
+                       run->pieces == TS_SOLID_LIGHT_PIECES, plan);
 }
 
 static double
@@ -239,6 +242,10 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
     }
   if (status != TS_OK)
     return status;
+  /* The first view's, as ts_solid_first_view picks it. */
+  int a = run->exemplar_of[0] >= 0 ? 0 : run->exemplar_of[1] >= 0 ? 1 : 2;
+  if (!run->params->cell_structure && run->levels > 1)
+    run->pieces = ts_solid_exemplar_pieces (&run->exemplar[run->exemplar_of[a]].pyramid.level[0]);
   return run->params->cell_structure
            ? ts_solid_cell_guide_seed (&run->cells, run->params->size, run->params->seed)
            : TS_OK;
@@ -488,12 +495,11 @@ guide_phases (Run *run)
 {
   TsSolidLevel *l = &run->level;
   const TsSolidView *first = ts_solid_first_view (l);
-  TsSolidPieces pieces = ts_solid_phase_in_pieces (first->exemplar, first->phase_split);
   TsStatus status;
 
-  if (pieces == TS_SOLID_NO_PIECES)
+  if (run->pieces == TS_SOLID_NO_PIECES)
     return TS_OK;
-  status = ts_solid_wall_necks (l, first->phase_split, pieces);
+  status = ts_solid_wall_necks (l, first->phase_split, run->pieces);
   for (size_t e = 0; e < run->exemplars && status == TS_OK; e++)
     {
       Exemplar *ex = &run->exemplar[e];
