@@ -36,8 +36,6 @@ cd "$(dirname "$0")/.."
 root=$PWD
 
 mode=${1:-all}
-ops_path() { echo "$root/$1/operations:$(pkg-config --variable=pluginsdir gegl-0.4)"; }
-
 run_asan() {
   echo "== AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)"
   [ -f build-asan/build.ninja ] ||
@@ -75,7 +73,7 @@ run_valgrind() {
   # GEGL loads every module at start-up; ffmpeg's (ff-load, ff-save) pull
   # in libhwy, whose CPU probe runs AVX-512 code valgrind 3.19 cannot
   # decode (SIGILL inside gegl_init on AVX-512 machines). No run uses them.
-  local modules; modules=$(mktemp -d)
+  local m modules; modules=$(mktemp -d)
   for m in "$(pkg-config --variable=pluginsdir gegl-0.4)"/*; do
     case $(basename "$m") in ff-*) ;; *) ln -s "$m" "$modules/" ;; esac
   done
