@@ -175,6 +175,15 @@ void     ts_solid_cell_guide_free (TsSolidCellGuide *guide);
 #define TS_SOLID_TONE_WEIGHT 1.0f
 #define TS_SOLID_TONE_SPREAD 6.0f
 
+/* Which phase of an exemplar, at its phase split, lies in separate
+ * pieces (phase-guide.c): the light one is asked first. */
+typedef enum
+{
+  TS_SOLID_NO_PIECES,
+  TS_SOLID_LIGHT_PIECES,
+  TS_SOLID_DARK_PIECES
+} TsSolidPieces;
+
 /* One slice orientation at one level. */
 typedef struct
 {
@@ -215,6 +224,8 @@ typedef struct
   const float  *cell_tone;  /* per cell, with cell_of (cell-tone.c)    */
   const float  *phase_field; /* with the phase guide: per voxel
                                 (phase-guide.c); else NULL */
+  TsSolidPieces kept_apart; /* the phase whose pieces the E-step keeps
+                               apart (piece-topology.c), or none */
 } TsSolidLevel;
 
 /* Adds an exemplar's stone pixels' section tones (`stone_tone`, NAN off
@@ -434,15 +445,6 @@ ts_solid_copy_voxel (TsSolidLevel *level, size_t to, size_t from)
  * neighbour on the other side (specks.c). */
 TsStatus ts_solid_remove_specks (TsSolidLevel *level);
 
-/* Which phase of an exemplar, at its phase split, lies in separate
- * pieces (phase-guide.c): the light one is asked first. */
-typedef enum
-{
-  TS_SOLID_NO_PIECES,
-  TS_SOLID_LIGHT_PIECES,
-  TS_SOLID_DARK_PIECES
-} TsSolidPieces;
-
 /* At the finest level's start, with the phase guide: the voxels where
  * two deep basins of the phase in pieces meet, and their face
  * neighbours of that phase, copy the nearest voxel of the other phase
@@ -456,6 +458,13 @@ TsSolidPieces ts_solid_exemplar_pieces (const TsImage *ex);
 TsStatus ts_solid_phase_distances (const TsImage *ex, float split, float **out);
 /* The same for every voxel of the level's values. */
 TsStatus ts_solid_phase_field (const TsSolidLevel *level, float split, float **out);
+
+/* Whether voxel xyz, turned into the phase in pieces (the light one at
+ * `split` if `light_pieces`), would join two pieces its 18-neighbourhood
+ * holds apart; only voxels outside the E-step's current batch count
+ * (piece-topology.c). */
+bool ts_solid_joins_pieces (const TsSolidLevel *level, const size_t xyz[3], const uint8_t *batch_of,
+                            uint8_t batch, float split, bool light_pieces);
 
 /* --- E-step ---------------------------------------------------------------- */
 

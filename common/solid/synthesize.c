@@ -489,7 +489,8 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
 
 /* At the finest level's start on the default path, if the exemplar's
  * light or dark phase lies in separate pieces: walls at the start's necks
- * (neck-walls.c), then the phase guide that holds them (phase-guide.c). */
+ * (neck-walls.c), the phase guide that holds them (phase-guide.c), and
+ * for stones the E-step's rule that keeps them apart (piece-topology.c). */
 static TsStatus
 guide_phases (Run *run)
 {
@@ -513,6 +514,7 @@ guide_phases (Run *run)
     if (run->exemplar_of[a] >= 0)
       l->view[a].phase_distance = run->exemplar[run->exemplar_of[a]].phase_distance;
   l->phase_field = run->phase_field;
+  l->kept_apart = run->pieces == TS_SOLID_LIGHT_PIECES ? run->pieces : TS_SOLID_NO_PIECES;
   return TS_OK;
 }
 
