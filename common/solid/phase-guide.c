@@ -104,6 +104,28 @@ ts_solid_exemplar_pieces (const TsImage *ex)
   return ts_solid_phase_in_pieces (ex, split);
 }
 
+TsStatus
+ts_solid_exemplar_stones (const TsImage *ex, bool *stones)
+{
+  size_t count = ts_image_pixel_count (ex), light = 0, deep = 0;
+  float split, joint, *distance = NULL;
+  TsStatus status;
+
+  ts_solid_splits (ex, &split, &joint);
+  status = ts_solid_phase_distances (ex, split, &distance);
+  /* A light pixel's signed distance lies half a pixel short of its
+   * distance to the dark phase. */
+  for (size_t i = 0; i < count && status == TS_OK; i++)
+    if (ex->pixels[i * TS_CHANNELS + 3] > 0.0f && distance[i] > 0.0f)
+      {
+        light++;
+        deep += distance[i] >= TS_SOLID_STONE_DEPTH - 0.5f;
+      }
+  free (distance);
+  *stones = status == TS_OK && light > 0 && (double) deep >= TS_SOLID_STONE_SHARE * (double) light;
+  return status;
+}
+
 /* Clipped signed distances of `count` working-format pixels (a grid of
  * dims) to the phase boundary at `split`, in a new array. */
 static TsStatus

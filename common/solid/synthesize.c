@@ -72,6 +72,7 @@ typedef struct
   float               *phase_field; /* finest level, with the phase guide */
   TsSolidPieces        pieces;      /* the phase guide's gate, at the finest
                                        level of the first view's exemplar */
+  bool                 stones;      /* its light pieces are stones, kept apart */
 } Run;
 
 static bool
@@ -245,7 +246,14 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
   /* The first view's, as ts_solid_first_view picks it. */
   int a = run->exemplar_of[0] >= 0 ? 0 : run->exemplar_of[1] >= 0 ? 1 : 2;
   if (!run->params->cell_structure && run->levels > 1)
-    run->pieces = ts_solid_exemplar_pieces (&run->exemplar[run->exemplar_of[a]].pyramid.level[0]);
+    {
+      const TsImage *finest = &run->exemplar[run->exemplar_of[a]].pyramid.level[0];
+      run->pieces = ts_solid_exemplar_pieces (finest);
+      if (run->pieces == TS_SOLID_LIGHT_PIECES)
+        status = ts_solid_exemplar_stones (finest, &run->stones);
+    }
+  if (status != TS_OK)
+    return status;
   return run->params->cell_structure
            ? ts_solid_cell_guide_seed (&run->cells, run->params->size, run->params->seed)
            : TS_OK;
@@ -514,7 +522,7 @@ guide_phases (Run *run)
     if (run->exemplar_of[a] >= 0)
       l->view[a].phase_distance = run->exemplar[run->exemplar_of[a]].phase_distance;
   l->phase_field = run->phase_field;
-  l->kept_apart = run->pieces == TS_SOLID_LIGHT_PIECES ? run->pieces : TS_SOLID_NO_PIECES;
+  l->kept_apart = run->stones ? TS_SOLID_LIGHT_PIECES : TS_SOLID_NO_PIECES;
   return TS_OK;
 }
 
