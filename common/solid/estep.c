@@ -414,10 +414,11 @@ keep_pieces_apart (const TsSolidLevel *level, Votes *v)
 {
   bool light_pieces = level->kept_apart == TS_SOLID_LIGHT_PIECES;
   float split = ts_solid_first_view (level)->phase_split;
-  float winner = level->view[v->axis].exemplar->pixels[(size_t) v->source * TS_CHANNELS];
+  const float *winner = level->view[v->axis].exemplar->pixels + (size_t) v->source * TS_CHANNELS;
   int best = -1;
 
-  if ((v->current[0] >= split) == light_pieces || (winner >= split) != light_pieces
+  if (ts_solid_is_light (v->current, split) == light_pieces
+      || ts_solid_is_light (winner, split) != light_pieces
       || !ts_solid_joins_pieces (level, v->xyz, v->batch_of, v->batch, split, light_pieces))
     return;
   for (int k = 0; k < LONE_CLASSES; k++)

@@ -50,7 +50,7 @@ piece_block (const TsSolidLevel *level, const size_t xyz[3], const uint8_t *batc
         continue;
       size_t qi = (q[2] * n + q[1]) * n + q[0];
       if (batch_of[qi] != batch)
-        piece[k] = (level->value[qi * TS_CHANNELS] >= split) == light_pieces;
+        piece[k] = ts_solid_is_light (level->value + qi * TS_CHANNELS, split) == light_pieces;
     }
 }
 

@@ -1,7 +1,8 @@
-/* The phase guide's parts (phase-guide.c, neck-walls.c): which
- * exemplars turn it on and for which phase, the walls that part two
- * balls (light on dark, or dark on light) joined by a neck and leave a
- * lone ball alone, and the clipped signed distances. */
+/* The phase guide's parts (phase-guide.c, neck-walls.c,
+ * piece-topology.c): which exemplars turn it on and for which phase, and
+ * which have stones, the walls that part two balls (light on dark, or
+ * dark on light) joined by a neck and leave a lone ball alone, the test
+ * that keeps two stones apart, and the clipped signed distances. */
 #include "test-util.h"
 #include "solid/solid.h"
 
@@ -16,22 +17,28 @@
 #define DARK_L 20.0f
 #define SPLIT 50.0f
 
-/* Discs of radius 5 on a 12-pixel lattice, light on dark or dark on
+/* Discs of the radius on a 12-pixel lattice, light on dark or dark on
  * light, side x side. */
 static void
-discs (TsImage *img, size_t side, bool light_discs)
+discs_of (TsImage *img, size_t side, bool light_discs, float radius)
 {
   CHECK (ts_image_alloc (img, side, side) == TS_OK, "alloc");
   for (size_t y = 0; y < side; y++)
     for (size_t x = 0; x < side; x++)
       {
         float dx = (float) (x % 12) - 6.0f, dy = (float) (y % 12) - 6.0f;
-        bool in = dx * dx + dy * dy <= 25.0f;
+        bool in = dx * dx + dy * dy <= radius * radius;
         float *p = img->pixels + (y * side + x) * TS_CHANNELS;
         p[0] = in == light_discs ? LIGHT_L : DARK_L;
         p[1] = p[2] = 0.0f;
         p[3] = 1.0f;
       }
+}
+
+static void
+discs (TsImage *img, size_t side, bool light_discs)
+{
+  discs_of (img, side, light_discs, 5.0f);
 }
 
 static void
@@ -58,6 +65,23 @@ test_gate (void)
       img.pixels[i * TS_CHANNELS + 3] = 0.0f;
   CHECK (ts_solid_phase_in_pieces (&img, SPLIT) == TS_SOLID_DARK_PIECES,
          "dark discs on a transparent ground: the dark phase in pieces");
+  free (img.pixels);
+}
+
+/* Stones are light pieces with insides: discs of radius 5 are, grains
+ * of radius 1.5 are not. */
+static void
+test_stones (void)
+{
+  TsImage img;
+  bool stones = false;
+
+  discs (&img, 48, true);
+  CHECK (ts_solid_exemplar_stones (&img, &stones) == TS_OK && stones, "discs of radius 5: stones");
+  free (img.pixels);
+  discs_of (&img, 48, true, 1.5f);
+  CHECK (ts_solid_exemplar_stones (&img, &stones) == TS_OK && !stones,
+         "grains of radius 1.5: not stones");
   free (img.pixels);
 }
 
@@ -175,6 +199,34 @@ test_walls (bool dark_balls)
   free (value);
 }
 
+/* Two light balls two voxels apart: a voxel of the gap would join them,
+ * one outside them would not; voxels of the E-step's current batch do
+ * not count. */
+static void
+test_kept_apart (void)
+{
+  TsSolidLevel level;
+  const float two[2] = { 9.0f, 23.0f };
+  float *value = balls (&level, two, 2, false, false);
+  uint8_t *batch_of = calloc ((size_t) N * N * N, 1);
+  const size_t gap[3] = { 16, 16, 16 }, beside[3] = { 2, 16, 16 }, above[3] = { 16, 16, 20 };
+
+  CHECK (batch_of != NULL, "alloc");
+  CHECK (phase_pieces (&level, true) == 2, "two balls");
+  CHECK (batch_of && ts_solid_joins_pieces (&level, gap, batch_of, 1, SPLIT, true),
+         "a voxel between the balls joins them");
+  CHECK (batch_of && !ts_solid_joins_pieces (&level, beside, batch_of, 1, SPLIT, true),
+         "a voxel beside one ball joins nothing");
+  CHECK (batch_of && !ts_solid_joins_pieces (&level, above, batch_of, 1, SPLIT, true),
+         "a voxel far from both joins nothing");
+  CHECK (batch_of && !ts_solid_joins_pieces (&level, gap, batch_of, 0, SPLIT, true),
+         "neighbours in the current batch do not count");
+  CHECK (batch_of && !ts_solid_joins_pieces (&level, gap, batch_of, 1, SPLIT, false),
+         "the dark phase around the gap is one piece");
+  free (batch_of);
+  free (value);
+}
+
 static void
 test_field (void)
 {
@@ -209,6 +261,9 @@ test_threads (void)
   float *one = malloc (floats * sizeof (float)), *two = malloc (floats * sizeof (float));
 
   discs (&img, 96, true);
+  bool stones = false;
+  CHECK (ts_solid_exemplar_stones (&img, &stones) == TS_OK && stones,
+         "the discs are stones, so the E-step keeps them apart");
   /* Shade the discs so the volume's phases come from exemplar colours. */
   for (size_t i = 0; i < 96 * 96; i++)
     img.pixels[i * TS_CHANNELS + 1] = (float) (i % 7);
@@ -236,7 +291,9 @@ int
 main (void)
 {
   test_gate ();
+  test_stones ();
   test_walls (false);
+  test_kept_apart ();
   test_walls (true);
   test_field ();
   test_threads ();
