@@ -413,7 +413,7 @@ static void
 keep_pieces_apart (const TsSolidLevel *level, Votes *v)
 {
   bool light_pieces = level->kept_apart == TS_SOLID_LIGHT_PIECES;
-  float split = ts_solid_first_view (level)->phase_split;
+  float split = level->pieces_split;
   const float *winner = level->view[v->axis].exemplar->pixels + (size_t) v->source * TS_CHANNELS;
   int best = -1;
 

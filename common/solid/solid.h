@@ -229,6 +229,8 @@ typedef struct
                                 (phase-guide.c); else NULL */
   TsSolidPieces kept_apart; /* the phase whose pieces the E-step keeps
                                apart (piece-topology.c), or none */
+  float        pieces_split; /* with kept_apart, the lightness between
+                                the pieces and their ground */
 } TsSolidLevel;
 
 /* Adds an exemplar's stone pixels' section tones (`stone_tone`, NAN off
