@@ -1,13 +1,14 @@
 /* Pieces kept apart, at the finest level with the phase guide, for
- * exemplars whose light phase lies in separate pieces (stones in
- * mortar): the E-step does not turn a voxel of the other phase into the
- * piece phase where that would join two pieces its neighbourhood holds
- * apart (estep.c). Why: the walls cut at the start's necks
- * (neck-walls.c) split the start into stones, but the slice
- * neighbourhoods draw new necks through the joints, and after the
- * level's first iteration one piece held 98.5 % of the light voxels
- * again (128^3 cells seed 5; the truth's largest holds 0.3 %; solid
- * history, stops 64 and 66).
+ * exemplars whose light phase lies in separate stones (stones in
+ * mortar; ts_solid_exemplar_stones): the E-step does not turn a joint
+ * voxel into stone where that would join two stones its neighbourhood
+ * holds apart (estep.c). Stones and joints part at the exemplar's joint
+ * split (synthesize.c), so dark stones are stones too. Why: the walls
+ * cut at the start's necks (neck-walls.c) split the start into stones,
+ * but the slice neighbourhoods draw new necks through the joints, and
+ * after the level's first iteration one piece held 98.5 % of the light
+ * voxels again (128^3 cells seed 5; the truth's largest holds 0.3 %;
+ * solid history, stops 64 and 66).
  *
  * The test is digital topology's local one: the 6-connected components
  * of piece voxels in the voxel's 18-neighbourhood that touch one of its
