@@ -520,11 +520,11 @@ guide_phases (Run *run)
 {
   TsSolidLevel *l = &run->level;
   const TsSolidView *first = ts_solid_first_view (l);
-  float split = pieces_split (run, first->exemplar, first->phase_split);
   TsStatus status;
 
   if (run->pieces == TS_SOLID_NO_PIECES)
     return TS_OK;
+  float split = pieces_split (run, first->exemplar, first->phase_split);
   status = ts_solid_wall_necks (l, split, run->pieces);
   for (size_t e = 0; e < run->exemplars && status == TS_OK; e++)
     {
