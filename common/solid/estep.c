@@ -55,7 +55,7 @@
  * stones in mortar): a vote that would join two stones through a joint
  * voxel yields to the heaviest vote below the phase split
  * (piece-topology.c). 128^3 cells, seeds 1-6, with the stones parted at
- * the joint split (synthesize.c): coherence 1.097 -> 1.078 x the
+ * the joint split (phase-plan.c): coherence 1.097 -> 1.078 x the
  * truth's, specks 3.13 -> 2.81 x (solid history, stop 66).
  *
  * Cell tones (the level's `cell_tone`, at the finest level with the

@@ -95,23 +95,13 @@ ts_solid_phase_in_pieces (const TsImage *ex, float split)
                                           : TS_SOLID_NO_PIECES;
 }
 
-TsSolidPieces
-ts_solid_exemplar_pieces (const TsImage *ex)
-{
-  float split, joint;
-
-  ts_solid_splits (ex, &split, &joint);
-  return ts_solid_phase_in_pieces (ex, split);
-}
-
 TsStatus
-ts_solid_exemplar_stones (const TsImage *ex, bool *stones)
+ts_solid_exemplar_stones (const TsImage *ex, float split, bool *stones)
 {
   size_t count = ts_image_pixel_count (ex), light = 0, deep = 0;
-  float split, joint, *distance = NULL;
+  float *distance = NULL;
   TsStatus status;
 
-  ts_solid_splits (ex, &split, &joint);
   status = ts_solid_phase_distances (ex, split, &distance);
   /* A light pixel's signed distance lies half a pixel short of its
    * distance to the dark phase. */

@@ -3,7 +3,7 @@
  * mortar; ts_solid_exemplar_stones): the E-step does not turn a joint
  * voxel into stone where that would join two stones its neighbourhood
  * holds apart (estep.c). Stones and joints part at the exemplar's joint
- * split (synthesize.c), so dark stones are stones too. Why: the walls
+ * split (phase-plan.c), so dark stones are stones too. Why: the walls
  * cut at the start's necks (neck-walls.c) split the start into stones,
  * but the slice neighbourhoods draw new necks through the joints, and
  * after the level's first iteration one piece held 98.5 % of the light

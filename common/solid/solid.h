@@ -361,7 +361,7 @@ ts_solid_match_index (size_t cu, size_t cv, size_t t, size_t ju, size_t jv)
  * the 2D schedule for the smallest exemplar's ex_w x ex_h at that
  * level, with the solid engine's neighbourhood sizes, iterations and
  * spacings; `joints`: the exemplar's light phase lies in separate pieces
- * (ts_solid_exemplar_pieces), whose joints the finest level iterates
+ * (ts_solid_phase_plan), whose joints the finest level iterates
  * longer to close. */
 void ts_solid_plan_level (const TsSolidParams *sp, size_t level, size_t levels, size_t n,
                           size_t ex_w, size_t ex_h, bool joints, TsLevelPlan *plan);
@@ -456,10 +456,8 @@ TsStatus ts_solid_remove_specks (TsSolidLevel *level);
  * (neck-walls.c). */
 TsStatus ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces);
 TsSolidPieces ts_solid_phase_in_pieces (const TsImage *ex, float split);
-/* The same at the exemplar's own phase split (ts_solid_splits). */
-TsSolidPieces ts_solid_exemplar_pieces (const TsImage *ex);
-/* Whether the exemplar's light phase, at its own phase split, is stones:
- * at least TS_SOLID_STONE_SHARE of its opaque light pixels lie
+/* Whether the exemplar's light phase, at its phase split `split`
+ * (ts_solid_splits), is stones: at least TS_SOLID_STONE_SHARE of its opaque light pixels lie
  * TS_SOLID_STONE_DEPTH pixels or more from the dark phase. The E-step
  * keeps only stones apart (piece-topology.c): thin veins and small
  * grains, whose pieces in a slice may join in the volume, came out
@@ -469,12 +467,39 @@ TsSolidPieces ts_solid_exemplar_pieces (const TsImage *ex);
  * 0.53-0.59 (their 64^2 crops 0.48-0.55), ground1 0.61, stone33 0.53,
  * bluemetal 0.52, canyons2 0.80, 3dweave 0.88 (stones); rock 0.36,
  * cracked 0.18, java 0.12, bark 0.12, granite1 0.11, burlap 0.07. */
-TsStatus ts_solid_exemplar_stones (const TsImage *ex, bool *stones);
+TsStatus ts_solid_exemplar_stones (const TsImage *ex, float split, bool *stones);
 /* Every pixel's clipped signed distance (light positive) to the phase
  * boundary at `split`, in a new array. */
 TsStatus ts_solid_phase_distances (const TsImage *ex, float split, float **out);
 /* The same for every voxel of the level's values. */
 TsStatus ts_solid_phase_field (const TsSolidLevel *level, float split, float **out);
+
+/* The phase guide's plan for one run on the default path (phase-plan.c). */
+typedef struct
+{
+  TsSolidPieces pieces;  /* the first view's finest exemplar's phase in
+                            pieces; none: no phase guide */
+  bool          stones;  /* its light pieces are stones, kept apart */
+  float         split[TS_SOLID_AXES]; /* per distinct exemplar: the split
+                                         between its pieces and their
+                                         ground, the joint split for stones */
+  size_t        exemplars, first;     /* how many; the first view's */
+  float        *distance[TS_SOLID_AXES]; /* per exemplar, once started */
+  float        *field;                /* per voxel, once started */
+} TsSolidPhasePlan;
+
+/* The plan from the finest levels of the distinct exemplars, `first`
+ * being the first view's (ts_solid_first_view). */
+TsStatus ts_solid_phase_plan (TsSolidPhasePlan *plan, const TsImage *const finest[],
+                              size_t exemplars, size_t first);
+/* At the finest level's start, if the plan has pieces: walls at the
+ * start's necks, the phase guide's distances and field, and for stones
+ * the E-step's rule, in `level`, whose orientation a reads exemplar
+ * exemplar_of[a] (-1: none). */
+TsStatus ts_solid_phase_plan_start (TsSolidPhasePlan *plan, TsSolidLevel *level,
+                                    const TsImage *const finest[],
+                                    const int exemplar_of[TS_SOLID_AXES]);
+void     ts_solid_phase_plan_free (TsSolidPhasePlan *plan);
 
 /* Whether voxel xyz, turned into the phase in pieces (the light one at
  * `split` if `light_pieces`), would join two pieces its 18-neighbourhood

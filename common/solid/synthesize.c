@@ -46,7 +46,6 @@ typedef struct
   float           phase_split;  /* of the current level (phase-split.c) */
   float           joint_split;  /* of the current level, with the cell guide */
   float          *stone_tone;   /* finest level, with the cell guide */
-  float          *phase_distance; /* finest level, with the phase guide */
   TsSolidIndex    index;      /* all neighbourhoods of the current pass */
   TsSolidVarianceMap variance; /* their colour variances                */
 } Exemplar;
@@ -69,10 +68,7 @@ typedef struct
   TsSolidSource       *sources;                    /* the caller's, or NULL */
   TsSolidSource       *own_sources; /* the position histogram's, if no caller's */
   TsSolidCellGuide     cells;       /* with params->cell_structure */
-  float               *phase_field; /* finest level, with the phase guide */
-  TsSolidPieces        pieces;      /* the phase guide's gate, at the finest
-                                       level of the first view's exemplar */
-  bool                 stones;      /* its light pieces are stones, kept apart */
+  TsSolidPhasePlan     phases;      /* without it, with more than one level */
 } Run;
 
 static bool
@@ -118,7 +114,7 @@ plan_level (const Run *run, size_t level, TsLevelPlan *plan)
       ex_h = ex->height < ex_h ? ex->height : ex_h;
     }
   ts_solid_plan_level (run->params, level, run->levels, n, ex_w, ex_h,
-                       run->pieces == TS_SOLID_LIGHT_PIECES, plan);
+                       run->phases.pieces == TS_SOLID_LIGHT_PIECES, plan);
 }
 
 static double
@@ -153,7 +149,7 @@ run_free (Run *run)
   level_free (&run->level, run->volume);
   level_free (&run->coarser, run->volume);
   free (run->own_sources);
-  free (run->phase_field);
+  ts_solid_phase_plan_free (&run->phases);
   ts_solid_cell_guide_free (&run->cells);
   for (size_t e = 0; e < run->exemplars; e++)
     {
@@ -164,7 +160,6 @@ run_free (Run *run)
       free (ex->excess);
       free (ex->position_count);
       free (ex->stone_tone);
-      free (ex->phase_distance);
       ts_solid_index_free (&ex->index);
       ts_solid_variance_map_free (&ex->variance);
     }
@@ -195,6 +190,14 @@ choose_handedness (Run *run)
   run->exemplar_of[TS_SOLID_MIRRORED_AXIS] = (int) run->exemplars++;
   run->mirrored_axis = TS_SOLID_MIRRORED_AXIS;
   return TS_OK;
+}
+
+/* The finest pyramid levels of the distinct exemplars. */
+static void
+finest_exemplars (const Run *run, const TsImage *finest[TS_SOLID_AXES])
+{
+  for (size_t e = 0; e < run->exemplars; e++)
+    finest[e] = &run->exemplar[e].pyramid.level[0];
 }
 
 /* Working pyramids of the distinct exemplars, all with the same depth. */
@@ -247,10 +250,10 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
   int a = run->exemplar_of[0] >= 0 ? 0 : run->exemplar_of[1] >= 0 ? 1 : 2;
   if (!run->params->cell_structure && run->levels > 1)
     {
-      const TsImage *finest = &run->exemplar[run->exemplar_of[a]].pyramid.level[0];
-      run->pieces = ts_solid_exemplar_pieces (finest);
-      if (run->pieces == TS_SOLID_LIGHT_PIECES)
-        status = ts_solid_exemplar_stones (finest, &run->stones);
+      const TsImage *finest[TS_SOLID_AXES];
+      finest_exemplars (run, finest);
+      status = ts_solid_phase_plan (&run->phases, finest, run->exemplars,
+                                    (size_t) run->exemplar_of[a]);
     }
   if (status != TS_OK)
     return status;
@@ -495,56 +498,6 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
   return status;
 }
 
-/* The split between an exemplar's pieces and their ground for the phase
- * guide: for stones the joint split (phase-split.c), so that dark stones
- * are stones too and only the joints below it part them (128^3 cells,
- * seeds 1 and 5: coherence 1.067 and 1.148 x the truth's at the phase
- * split, 1.040 and 1.109 at the joint split; solid history, stop 66). */
-static float
-pieces_split (const Run *run, const TsImage *img, float phase_split)
-{
-  float phase, joint;
-
-  if (!run->stones)
-    return phase_split;
-  ts_solid_splits (img, &phase, &joint);
-  return joint;
-}
-
-/* At the finest level's start on the default path, if the exemplar's
- * light or dark phase lies in separate pieces: walls at the start's necks
- * (neck-walls.c), the phase guide that holds them (phase-guide.c), and
- * for stones the E-step's rule that keeps them apart (piece-topology.c). */
-static TsStatus
-guide_phases (Run *run)
-{
-  TsSolidLevel *l = &run->level;
-  const TsSolidView *first = ts_solid_first_view (l);
-  TsStatus status;
-
-  if (run->pieces == TS_SOLID_NO_PIECES)
-    return TS_OK;
-  float split = pieces_split (run, first->exemplar, first->phase_split);
-  status = ts_solid_wall_necks (l, split, run->pieces);
-  for (size_t e = 0; e < run->exemplars && status == TS_OK; e++)
-    {
-      const TsImage *img = &run->exemplar[e].pyramid.level[0];
-      status = ts_solid_phase_distances (img, pieces_split (run, img, run->exemplar[e].phase_split),
-                                         &run->exemplar[e].phase_distance);
-    }
-  if (status == TS_OK)
-    status = ts_solid_phase_field (l, split, &run->phase_field);
-  if (status != TS_OK)
-    return status;
-  for (int a = 0; a < TS_SOLID_AXES; a++)
-    if (run->exemplar_of[a] >= 0)
-      l->view[a].phase_distance = run->exemplar[run->exemplar_of[a]].phase_distance;
-  l->phase_field = run->phase_field;
-  l->kept_apart = run->stones ? TS_SOLID_LIGHT_PIECES : TS_SOLID_NO_PIECES;
-  l->pieces_split = split;
-  return TS_OK;
-}
-
 static TsStatus
 synthesize_level (Run *run, size_t level)
 {
@@ -576,7 +529,11 @@ synthesize_level (Run *run, size_t level)
   if (run->params->cell_structure)
     status = ts_solid_cell_guide_level (&run->cells, run->level.n, &run->midway);
   else if (level == 0 && run->levels > 1)
-    status = guide_phases (run);
+    {
+      const TsImage *finest[TS_SOLID_AXES];
+      finest_exemplars (run, finest);
+      status = ts_solid_phase_plan_start (&run->phases, &run->level, finest, run->exemplar_of);
+    }
   if (status != TS_OK)
     return status;
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;

@@ -68,20 +68,39 @@ test_gate (void)
   free (img.pixels);
 }
 
+/* The plan of a run on one exemplar; whether it holds stones. */
+static bool
+planned_stones (const TsImage *img, TsSolidPhasePlan *plan)
+{
+  const TsImage *finest[1] = { img };
+
+  CHECK (ts_solid_phase_plan (plan, finest, 1, 0) == TS_OK, "the phase plan is made");
+  return plan->stones;
+}
+
 /* Stones are light pieces with insides: discs of radius 5 are, grains
- * of radius 1.5 are not. */
+ * of radius 1.5 are not. Stones are parted at the joint split, other
+ * pieces at the phase split. */
 static void
 test_stones (void)
 {
   TsImage img;
-  bool stones = false;
+  TsSolidPhasePlan plan;
+  float phase, joint;
 
   discs (&img, 48, true);
-  CHECK (ts_solid_exemplar_stones (&img, &stones) == TS_OK && stones, "discs of radius 5: stones");
+  ts_solid_splits (&img, &phase, &joint);
+  CHECK (planned_stones (&img, &plan) && plan.pieces == TS_SOLID_LIGHT_PIECES,
+         "discs of radius 5: stones");
+  CHECK (joint < phase && plan.split[0] == joint, "stones are parted at the joint split");
+  ts_solid_phase_plan_free (&plan);
   free (img.pixels);
   discs_of (&img, 48, true, 1.5f);
-  CHECK (ts_solid_exemplar_stones (&img, &stones) == TS_OK && !stones,
-         "grains of radius 1.5: not stones");
+  ts_solid_splits (&img, &phase, &joint);
+  CHECK (!planned_stones (&img, &plan) && plan.pieces == TS_SOLID_LIGHT_PIECES,
+         "grains of radius 1.5: light pieces, not stones");
+  CHECK (plan.split[0] == phase, "grains are parted at the phase split");
+  ts_solid_phase_plan_free (&plan);
   free (img.pixels);
 }
 
@@ -261,9 +280,9 @@ test_threads (void)
   float *one = malloc (floats * sizeof (float)), *two = malloc (floats * sizeof (float));
 
   discs (&img, 96, true);
-  bool stones = false;
-  CHECK (ts_solid_exemplar_stones (&img, &stones) == TS_OK && stones,
-         "the discs are stones, so the E-step keeps them apart");
+  TsSolidPhasePlan plan;
+  CHECK (planned_stones (&img, &plan), "the discs are stones, so the E-step keeps them apart");
+  ts_solid_phase_plan_free (&plan);
   /* Shade the discs so the volume's phases come from exemplar colours. */
   for (size_t i = 0; i < 96 * 96; i++)
     img.pixels[i * TS_CHANNELS + 1] = (float) (i % 7);
