@@ -53,10 +53,12 @@
  *
  * Pieces kept apart (the level's `kept_apart`, at the finest level for
  * stones in mortar): a vote that would join two stones through a joint
- * voxel yields to the heaviest vote below the phase split
- * (piece-topology.c). 128^3 cells, seeds 1-6, with the stones parted at
- * the joint split (phase-plan.c): coherence 1.097 -> 1.078 x the
- * truth's, specks 3.13 -> 2.81 x (solid history, stop 66).
+ * voxel yields to the heaviest vote for a joint (piece-topology.c).
+ * 128^3 cells, seeds 1-6, with the stones parted at the joint split
+ * (phase-plan.c): coherence 1.097 -> 1.078 x the truth's, specks 3.13
+ * -> 2.81 x (solid history, stop 66); with the fallback a joint at that
+ * split too, not only below the phase split, 1.072 x and 2.73 x (stop
+ * 67).
  *
  * Cell tones (the level's `cell_tone`, at the finest level with the
  * cell guide): a vote for an exemplar stone whose tone differs from the
@@ -138,6 +140,15 @@ typedef struct
   float        phase_weight[LONE_CLASSES];
   int32_t      phase_source[LONE_CLASSES];
   int          phase_axis[LONE_CLASSES];
+  bool         by_ground; /* with the level's kept_apart, keep the
+                             heaviest vote for the pieces' ground too
+                             (at pieces_split, on the light side if
+                             light_pieces is false): */
+  float        ground_split;
+  bool         light_pieces;
+  float        ground_weight;
+  int32_t      ground_source;
+  int          ground_axis;
   float        tone;      /* the voxel's cell's tone, or NAN */
   float        phase;     /* the voxel's phase distance (phase-guide.c), or NAN */
   float        shear;     /* the level's shear */
@@ -206,11 +217,13 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
   if (ts_solid_same_pixel (value, v->current))
     weight *= TS_SOLID_INERTIA;
   int phase = v->by_phase ? lightness_class (view, value[0]) : 0;
+  bool ground = v->by_ground && ts_solid_is_light (value, v->ground_split) != v->light_pieces;
   /* The tone and the shear rule only lower a weight: skip their look-ups
    * for a vote that could not win anyway, as most cannot (the tone's cost
    * 2 s of 128^3). */
   if (weight <= v->weight && weight <= v->axis_weight[axis]
-      && (!v->by_phase || weight <= v->phase_weight[phase]))
+      && (!v->by_phase || weight <= v->phase_weight[phase])
+      && (!ground || weight <= v->ground_weight))
     return;
   if (view->stone_tone && !isnan (v->tone))
     {
@@ -236,6 +249,12 @@ add_vote (Votes *v, const TsSolidView *view, int axis, int32_t source, float wei
           v->phase_source[phase] = source;
           v->phase_axis[phase] = axis;
         }
+    }
+  if (ground && weight > v->ground_weight)
+    {
+      v->ground_weight = weight;
+      v->ground_source = source;
+      v->ground_axis = axis;
     }
   if (weight > v->axis_weight[axis])
     {
@@ -409,33 +428,22 @@ avoid_lone_voxel (const TsSolidLevel *level, Votes *v)
 
 /* The pieces kept apart (piece-topology.c): a winning vote that would
  * turn a voxel into a piece (at the level's pieces_split) and join two
- * of them yields to the heaviest vote of the other phase (at the phase
- * split, the lone-voxel rule's classes: at the joint split that may
- * still be a dark stone's pixel); with none, the voxel stays. */
+ * of them yields to the heaviest vote for their ground (at the same
+ * split: at the phase split it could still be a dark stone's pixel);
+ * with none, the voxel stays. */
 static void
 keep_pieces_apart (const TsSolidLevel *level, Votes *v)
 {
-  bool light_pieces = level->kept_apart == TS_SOLID_LIGHT_PIECES;
-  float split = level->pieces_split;
+  float split = v->ground_split;
   const float *winner = level->view[v->axis].exemplar->pixels + (size_t) v->source * TS_CHANNELS;
-  int best = -1;
 
-  if (ts_solid_is_light (v->current, split) == light_pieces
-      || ts_solid_is_light (winner, split) != light_pieces
-      || !ts_solid_joins_pieces (level, v->xyz, v->batch_of, v->batch, split, light_pieces))
+  if (ts_solid_is_light (v->current, split) == v->light_pieces
+      || ts_solid_is_light (winner, split) != v->light_pieces
+      || !ts_solid_joins_pieces (level, v->xyz, v->batch_of, v->batch, split, v->light_pieces))
     return;
-  for (int k = 0; k < LONE_CLASSES; k++)
-    if ((k == LONE_LIGHT) != light_pieces && v->phase_source[k] >= 0
-        && (best < 0 || v->phase_weight[k] > v->phase_weight[best]))
-      best = k;
-  if (best < 0)
-    {
-      v->source = -1;
-      return;
-    }
-  v->source = v->phase_source[best];
-  v->axis = v->phase_axis[best];
-  v->weight = v->phase_weight[best];
+  v->source = v->ground_source;
+  v->axis = v->ground_axis;
+  v->weight = v->ground_weight;
 }
 
 /* New value and sources of voxel `p`; false if nothing voted for it. */
@@ -467,10 +475,13 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
       v->phase_source[c] = -1;
       v->phase_axis[c] = 0;
     }
+  v->ground_weight = 0.0f;
+  v->ground_source = -1;
+  v->ground_axis = 0;
   collect (v, level, gu, gv, matches);
   if (v->source >= 0 && v->by_phase)
     avoid_lone_voxel (level, v);
-  if (v->source >= 0 && v->by_phase && level->kept_apart != TS_SOLID_NO_PIECES)
+  if (v->source >= 0 && v->by_ground)
     keep_pieces_apart (level, v);
   return v->source >= 0;
 }
@@ -552,6 +563,9 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
     v.batch_of = batch_of;
     v.batch = batch;
     v.by_phase = level->no_lone_voxels;
+    v.by_ground = level->no_lone_voxels && level->kept_apart != TS_SOLID_NO_PIECES;
+    v.ground_split = level->pieces_split;
+    v.light_pieces = level->kept_apart == TS_SOLID_LIGHT_PIECES;
     v.shear = level->shear;
     size_t ahead = 0, pending = 0; /* next voxel to prefetch; prefetched, not voted */
 #pragma omp for schedule(static)
