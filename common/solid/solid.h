@@ -457,11 +457,12 @@ TsStatus ts_solid_remove_specks (TsSolidLevel *level);
 TsStatus ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces);
 TsSolidPieces ts_solid_phase_in_pieces (const TsImage *ex, float split);
 /* Whether the exemplar's light phase, at its phase split `split`
- * (ts_solid_splits), is stones: at least TS_SOLID_STONE_SHARE of its opaque light pixels lie
- * TS_SOLID_STONE_DEPTH pixels or more from the dark phase. The E-step
- * keeps only stones apart (piece-topology.c): thin veins and small
- * grains, whose pieces in a slice may join in the volume, came out
- * blunter with the rule (128^3 seed 1, sharpness over the exemplar's:
+ * (ts_solid_splits), is stones: at least TS_SOLID_STONE_SHARE of its
+ * opaque light pixels lie TS_SOLID_STONE_DEPTH pixels or more from the
+ * dark phase. The E-step keeps only stones apart (piece-topology.c):
+ * thin veins and small grains, whose pieces in a slice may join in the
+ * volume, came out blunter with the rule (128^3 seed 1, sharpness over
+ * the exemplar's:
  * granite1 0.752 -> 0.718, java 0.898 -> 0.864). The share at the
  * central 128 x 128 of the bundled images: the cells truth's exemplars
  * 0.53-0.59 (their 64^2 crops 0.48-0.55), ground1 0.61, stone33 0.53,

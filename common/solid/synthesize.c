@@ -68,7 +68,8 @@ typedef struct
   TsSolidSource       *sources;                    /* the caller's, or NULL */
   TsSolidSource       *own_sources; /* the position histogram's, if no caller's */
   TsSolidCellGuide     cells;       /* with params->cell_structure */
-  TsSolidPhasePlan     phases;      /* without it, with more than one level */
+  TsSolidPhasePlan     phases;      /* without the cell structure, with
+                                       more than one level */
 } Run;
 
 static bool
