@@ -5,8 +5,8 @@
  * level's layout, upsampled) merges neighbouring stones through necks; a
  * watershed of the piece voxels' distance to the ground finds them:
  * flooding from the deepest voxels down, two basins whose peaks both
- * rise at least TS_SOLID_NECK_HEIGHT above the voxel where they meet
- * stay apart, and that voxel becomes wall. The walls, thickened by one
+ * rise at least the neck height above the voxel where they meet stay
+ * apart, and that voxel becomes wall. The walls, thickened by one
  * voxel, copy the nearest ground voxel; the phase guide then holds them
  * through the level, whose slice neighbourhoods turn them into joints.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
@@ -71,7 +71,7 @@ deepest_first (const uint8_t *phase, const float *distance, size_t voxels, int32
  * voxel, so its peak is distance[root]. */
 static void
 flood (const TsSolidLevel *level, uint8_t *phase, const float *distance, const int32_t *order,
-       size_t count_in_order, int32_t *parent)
+       size_t count_in_order, float neck_height, int32_t *parent)
 {
   size_t n = level->n;
 
@@ -98,7 +98,7 @@ flood (const TsSolidLevel *level, uint8_t *phase, const float *distance, const i
             || (distance[roots[j]] == distance[deepest] && roots[j] < deepest))
           deepest = roots[j];
       for (int j = 0; j < count; j++)
-        apart = apart || (roots[j] != deepest && distance[roots[j]] - distance[p] >= TS_SOLID_NECK_HEIGHT);
+        apart = apart || (roots[j] != deepest && distance[roots[j]] - distance[p] >= neck_height);
       if (apart)
         {
           parent[p] = WALLED;
@@ -168,7 +168,7 @@ copy_ground (TsSolidLevel *level, const uint8_t *phase)
 }
 
 TsStatus
-ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces)
+ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces, float neck_height)
 {
   size_t n = level->n, voxels = n * n * n, in_pieces = 0, dims[3] = { n, n, n };
   bool wrap[3] = { level->periodic, level->periodic, level->periodic };
@@ -195,7 +195,7 @@ ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces)
     status = deepest_first (phase, distance, voxels, order, &in_pieces);
   if (status == TS_OK && necks)
     {
-      flood (level, phase, distance, order, in_pieces, parent);
+      flood (level, phase, distance, order, in_pieces, neck_height, parent);
       thicken (level, phase, voxels);
       copy_ground (level, phase);
     }

@@ -33,6 +33,7 @@ ts_solid_phase_plan (TsSolidPhasePlan *plan, const TsImage *const finest[], size
     status = ts_solid_exemplar_stones (finest[first], phase[first], &plan->stones);
   for (size_t e = 0; e < exemplars; e++)
     plan->split[e] = plan->stones ? joint[e] : phase[e];
+  plan->neck_height = plan->stones ? TS_SOLID_STONE_NECK_HEIGHT : TS_SOLID_NECK_HEIGHT;
   plan->exemplars = exemplars;
   plan->first = first;
   return status;
@@ -47,7 +48,7 @@ ts_solid_phase_plan_start (TsSolidPhasePlan *plan, TsSolidLevel *level,
 
   if (plan->pieces == TS_SOLID_NO_PIECES)
     return TS_OK;
-  status = ts_solid_wall_necks (level, split, plan->pieces);
+  status = ts_solid_wall_necks (level, split, plan->pieces, plan->neck_height);
   for (size_t e = 0; e < plan->exemplars && status == TS_OK; e++)
     status = ts_solid_phase_distances (finest[e], plan->split[e], &plan->distance[e]);
   if (status == TS_OK)

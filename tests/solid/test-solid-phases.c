@@ -93,6 +93,8 @@ test_stones (void)
   CHECK (planned_stones (&img, &plan) && plan.pieces == TS_SOLID_LIGHT_PIECES,
          "discs of radius 5: stones");
   CHECK (joint < phase && plan.split[0] == joint, "stones are parted at the joint split");
+  CHECK (plan.neck_height == TS_SOLID_STONE_NECK_HEIGHT && TS_SOLID_STONE_NECK_HEIGHT < TS_SOLID_NECK_HEIGHT,
+         "stones are walled at lower necks than other pieces: %g", (double) plan.neck_height);
   ts_solid_phase_plan_free (&plan);
   free (img.pixels);
   discs_of (&img, 48, true, 1.5f);
@@ -100,6 +102,8 @@ test_stones (void)
   CHECK (!planned_stones (&img, &plan) && plan.pieces == TS_SOLID_LIGHT_PIECES,
          "grains of radius 1.5: light pieces, not stones");
   CHECK (plan.split[0] == phase, "grains are parted at the phase split");
+  CHECK (plan.neck_height == TS_SOLID_NECK_HEIGHT, "grains are walled at the pieces' neck height: %g",
+         (double) plan.neck_height);
   ts_solid_phase_plan_free (&plan);
   free (img.pixels);
 }
@@ -179,7 +183,7 @@ test_walls (bool dark_balls)
   float *value = balls (&level, two, 2, true, dark_balls);
   CHECK (phase_pieces (&level, !dark_balls) == 1, "%s: the neck joins them: %zu pieces", kind,
          phase_pieces (&level, !dark_balls));
-  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces) == TS_OK, "%s: walls", kind);
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK, "%s: walls", kind);
   CHECK (phase_pieces (&level, !dark_balls) == 2, "%s: a wall parts them: %zu pieces", kind,
          phase_pieces (&level, !dark_balls));
   CHECK (phase_pieces (&level, dark_balls) == 1, "%s: the ground stays one piece: %zu", kind,
@@ -195,13 +199,20 @@ test_walls (bool dark_balls)
   CHECK (deep == 2 * 123, "%s: their cores stay as they were: %zu of %d voxels", kind, deep, 2 * 123);
   free (value);
 
+  /* The balls' peaks (radius 6) rise less than 7 voxels above the neck. */
+  value = balls (&level, two, 2, true, dark_balls);
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, 7.0f) == TS_OK && phase_pieces (&level, !dark_balls) == 1,
+         "%s: no wall where the peaks rise less than the neck height: %zu pieces", kind,
+         phase_pieces (&level, !dark_balls));
+  free (value);
+
   value = balls (&level, one, 1, false, dark_balls);
   float *before = malloc ((size_t) N * N * N * TS_CHANNELS * sizeof (float));
   CHECK (before != NULL, "alloc");
   if (before)
     {
       memcpy (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float));
-      CHECK (ts_solid_wall_necks (&level, SPLIT, pieces) == TS_OK, "%s: walls, one ball", kind);
+      CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK, "%s: walls, one ball", kind);
       CHECK (memcmp (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float)) == 0,
              "%s: a lone ball has no neck: nothing changes", kind);
     }
@@ -213,7 +224,7 @@ test_walls (bool dark_balls)
   value = balls (&level, one, 0, false, dark_balls);
   for (size_t p = 0; p < (size_t) N * N * N; p++)
     value[p * TS_CHANNELS] = ball_l;
-  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces) == TS_OK && phase_pieces (&level, !dark_balls) == 1,
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK && phase_pieces (&level, !dark_balls) == 1,
          "%s: all one phase", kind);
   free (value);
 }
