@@ -257,20 +257,22 @@ int
 main (void)
 {
   static const Case cases[] = {
-    /* At 64^3, mean of seeds 1-3: sharpness cells 0.92, blobs 1.10,
-     * grains 1.07 x the truth's; coherence 0.94, 1.06, 1.01 x; specks
-     * 3.31, 1.35, 1.98 x. Grains' specks were 1.80 x before the phase
-     * guide took dark pieces too (solid history, stop 64); the 64^2
-     * blobs exemplar's largest dark piece holds 0.60 of its dark pixels,
-     * so the guide stays off for it. Cells' specks were 3.74 x before
+    /* At 64^3, mean of seeds 1-3: sharpness cells 0.93, blobs 1.10,
+     * grains 1.07 x the truth's; coherence 0.95, 1.06, 1.01 x; specks
+     * 3.22, 1.35, 1.98 x (cells 0.91, 0.93 and 3.14 before stones were
+     * walled at lower necks, stop 68). Grains' specks were 1.80 x
+     * before the phase guide took dark pieces too (solid history, stop
+     * 64); the 64^2 blobs exemplar's largest dark piece holds 0.60 of
+     * its dark pixels, so the guide stays off for it. Cells' specks were 3.74 x before
      * the phase guide; 3.7, 1.35, 1.81 x before the starts paired
      * children at a random shift, start.c; 3.5, 1.3, 1.7 x before the
      * E-step's shear rule; 4.4, 1.5, 1.9 x without specks.c's pass,
      * 6.5, 2.1, 2.5 x without the E-step's lone-voxel rule either (the
      * cells' and blobs' specks bounds catch both). Cells' light sections
-     * 0.73 x the exemplar's (the light phase's; the dark stones are
-     * stones too since stop 66); 0.69 before the E-step kept stones
-     * apart (piece-topology.c) with the phase guide at the joint split,
+     * 0.81 x the exemplar's (the light phase's; the dark stones are
+     * stones too since stop 66); 0.73 with the stones' walls at necks
+     * of 1.5 voxels, 0.69 before the E-step kept stones apart
+     * (piece-topology.c) with the phase guide at the joint split,
      * 0.52 without the phase guide and the walls at necks either
      * (phase-guide.c, neck-walls.c), whose stones merged. Their
      * axis-edges 1.00 (1.03 before stop 66, 1.08 without the guide);
