@@ -1,7 +1,8 @@
 /* The phase guide's plan for one run on the default path: which phase of
  * the first view's finest exemplar lies in pieces, whether they are
- * stones, the split each exemplar's pieces are parted at, and, at the
- * finest level's start, the walls at necks (neck-walls.c), the phase
+ * stones, the split each exemplar's pieces are parted at, the necks'
+ * height at which they are walled (lower for stones: solid.h), and, at
+ * the finest level's start, the walls at necks (neck-walls.c), the phase
  * guide's distances (phase-guide.c) and the E-step's rule that keeps
  * stones apart (piece-topology.c).
  *
