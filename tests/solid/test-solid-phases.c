@@ -201,7 +201,8 @@ test_walls (bool dark_balls)
 
   /* The balls' peaks (radius 6) rise less than 7 voxels above the neck. */
   value = balls (&level, two, 2, true, dark_balls);
-  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, 7.0f) == TS_OK && phase_pieces (&level, !dark_balls) == 1,
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, 7.0f) == TS_OK
+             && phase_pieces (&level, !dark_balls) == 1,
          "%s: no wall where the peaks rise less than the neck height: %zu pieces", kind,
          phase_pieces (&level, !dark_balls));
   free (value);
@@ -212,7 +213,8 @@ test_walls (bool dark_balls)
   if (before)
     {
       memcpy (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float));
-      CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK, "%s: walls, one ball", kind);
+      CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK,
+             "%s: walls, one ball", kind);
       CHECK (memcmp (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float)) == 0,
              "%s: a lone ball has no neck: nothing changes", kind);
     }
@@ -224,7 +226,8 @@ test_walls (bool dark_balls)
   value = balls (&level, one, 0, false, dark_balls);
   for (size_t p = 0; p < (size_t) N * N * N; p++)
     value[p * TS_CHANNELS] = ball_l;
-  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK && phase_pieces (&level, !dark_balls) == 1,
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK
+             && phase_pieces (&level, !dark_balls) == 1,
          "%s: all one phase", kind);
   free (value);
 }

@@ -263,8 +263,8 @@ main (void)
      * walled at lower necks, stop 68). Grains' specks were 1.80 x
      * before the phase guide took dark pieces too (solid history, stop
      * 64); the 64^2 blobs exemplar's largest dark piece holds 0.60 of
-     * its dark pixels, so the guide stays off for it. Cells' specks were 3.74 x before
-     * the phase guide; 3.7, 1.35, 1.81 x before the starts paired
+     * its dark pixels, so the guide stays off for it. Cells' specks were
+     * 3.74 x before the phase guide; 3.7, 1.35, 1.81 x before the starts paired
      * children at a random shift, start.c; 3.5, 1.3, 1.7 x before the
      * E-step's shear rule; 4.4, 1.5, 1.9 x without specks.c's pass,
      * 6.5, 2.1, 2.5 x without the E-step's lone-voxel rule either (the
