@@ -98,10 +98,11 @@ match_shades (TsSolidCellGuide *g)
 const TsSolidView *
 ts_solid_first_view (const TsSolidLevel *l)
 {
-  for (int a = 0; a < TS_SOLID_AXES - 1; a++)
-    if (l->view[a].exemplar)
-      return &l->view[a];
-  return &l->view[TS_SOLID_AXES - 1];
+  int given[TS_SOLID_AXES];
+
+  for (int a = 0; a < TS_SOLID_AXES; a++)
+    given[a] = l->view[a].exemplar ? 0 : -1;
+  return &l->view[ts_solid_first_axis (given)];
 }
 
 void

@@ -171,14 +171,6 @@ next_to_source (const TsImage *ex, int32_t source, int dx, int dy, const float *
          && ts_solid_same_pixel (value, ex->pixels + (size_t) (y * w + x) * TS_CHANNELS);
 }
 
-/* Whether the voxel's face neighbours are read: by continuation, the
- * lone-voxel rule or the shear rule. */
-static bool
-reads_face_neighbours (const TsSolidLevel *level)
-{
-  return level->continuation > 0.0f || level->no_lone_voxels || level->shear > 0.0f;
-}
-
 /* How many of the voxel's two neighbours across the slice of `axis`
  * hold the exemplar pixel one step from `source`, and not its colour: the
  * shear rule's count (see the top of this file). */
@@ -459,7 +451,7 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
               : NAN;
   v->phase = level->phase_field ? level->phase_field[(xyz[2] * level->n + xyz[1]) * level->n + xyz[0]]
                                 : NAN;
-  if (reads_face_neighbours (level))
+  if (ts_solid_reads_face_neighbours (level))
     face_neighbours (level, v);
   v->weight = 0.0f;
   v->source = -1;
@@ -488,62 +480,6 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
 
 /* In-batch voxels whose data are fetched ahead of their vote. */
 #define TS_SOLID_PREFETCH_AHEAD 4
-
-#if defined(__GNUC__)
-#define prefetch(address, write) __builtin_prefetch ((address), (write), 3)
-#else
-#define prefetch(address, write) ((void) (address))
-#endif
-
-/* Asks for the cache lines voxel p's vote will read and write. A batch is
- * a random sixteenth of the voxels, so its voxels share few lines and each
- * vote waited on a dozen misses: a 128^3 E-step took three times as long
- * as one sweep of all voxels in order. */
-static void
-prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
-                TsSolidMatch *const matches[TS_SOLID_AXES], const size_t t_offset[TS_SOLID_AXES],
-                size_t p)
-{
-  size_t n = level->n, xyz[3] = { p % n, p / n % n, p / n / n };
-
-  prefetch (level->value + p * TS_CHANNELS, 1);
-  /* face_neighbours' lines, wrapped here whatever the border rule (a
-   * wrong guess at a mirrored border only costs a miss): its
-   * ts_border_index made the whole 128^3 run 1.5 s (6 %) slower. */
-  if (reads_face_neighbours (level))
-    for (int d = 1; d < TS_SOLID_AXES; d++)
-      {
-        size_t stride = ts_solid_stride (n, d), at = xyz[d] * stride;
-        size_t before = (xyz[d] + n - 1) % n * stride, after = (xyz[d] + 1) % n * stride;
-        prefetch (level->value + (p - at + before) * TS_CHANNELS, 0);
-        prefetch (level->value + (p - at + after) * TS_CHANNELS, 0);
-      }
-  for (int a = 0; a < TS_SOLID_AXES; a++)
-    if (level->source[a])
-      prefetch (level->source[a] + p, 1);
-  if (level->chosen)
-    prefetch (level->chosen + p, 1);
-  if (level->cell_tone)
-    prefetch (level->cell_of + p, 0);
-  for (int axis = 0; axis < TS_SOLID_AXES; axis++)
-    {
-      int u, w;
-      size_t ju_lo, ju_hi, jv_lo, jv_hi;
-      if (!matches[axis] || !ts_solid_slice_searched (xyz[axis], t_offset[axis]))
-        continue;
-      ts_solid_plane_axes (axis, &u, &w);
-      if (!ts_axis_grid_covering (gu, (ptrdiff_t) xyz[u], &ju_lo, &ju_hi)
-          || !ts_axis_grid_covering (gv, (ptrdiff_t) xyz[w], &jv_lo, &jv_hi))
-        continue;
-      for (size_t jv = jv_lo; jv <= jv_hi; jv++)
-        {
-          const TsSolidMatch *row = matches[axis] + ts_solid_match_index (gu->centres, gv->centres,
-                                                                          xyz[axis], 0, jv);
-          prefetch (row + ju_lo, 0);
-          prefetch (row + ju_hi, 0);
-        }
-    }
-}
 
 size_t
 ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
@@ -586,7 +522,7 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
           for (; pending < TS_SOLID_PREFETCH_AHEAD && ahead < voxels; ahead++)
             if (batch_of[ahead] == batch)
               {
-                prefetch_voxel (level, gu, gv, matches, t_offset, ahead);
+                ts_solid_prefetch_voxel (level, gu, gv, matches, t_offset, ahead);
                 pending++;
               }
           if (!vote_voxel (level, gu, gv, matches, xyz, value, &v))

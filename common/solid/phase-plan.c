@@ -19,13 +19,14 @@
 
 TsStatus
 ts_solid_phase_plan (TsSolidPhasePlan *plan, const TsImage *const finest[], size_t exemplars,
-                     size_t first)
+                     const int exemplar_of[TS_SOLID_AXES])
 {
   float phase[TS_SOLID_AXES], joint[TS_SOLID_AXES];
+  int first = exemplar_of[ts_solid_first_axis (exemplar_of)];
   TsStatus status = TS_OK;
 
   memset (plan, 0, sizeof *plan);
-  if (exemplars == 0 || exemplars > TS_SOLID_AXES || first >= exemplars)
+  if (exemplars == 0 || exemplars > TS_SOLID_AXES || first < 0 || (size_t) first >= exemplars)
     return TS_ERROR_INVALID_ARGUMENT;
   for (size_t e = 0; e < exemplars; e++)
     ts_solid_splits (finest[e], &phase[e], &joint[e]);
@@ -36,7 +37,7 @@ ts_solid_phase_plan (TsSolidPhasePlan *plan, const TsImage *const finest[], size
     plan->split[e] = plan->stones ? joint[e] : phase[e];
   plan->neck_height = plan->stones ? TS_SOLID_STONE_NECK_HEIGHT : TS_SOLID_NECK_HEIGHT;
   plan->exemplars = exemplars;
-  plan->first = first;
+  plan->first = (size_t) first;
   return status;
 }
 

@@ -436,7 +436,15 @@ void ts_solid_position_move (TsSolidLevel *level, TsSolidSource before, TsSolidS
  * times how much more often than uniformly the counts say it is copied. */
 void ts_solid_position_excess (TsSolidLevel *level);
 
-/* The first orientation with an exemplar: there is always one. */
+/* The first orientation, x then y then z, whose exemplar is given
+ * (exemplar_of[a] >= 0; there is always one): the volume-wide rules use
+ * its exemplar's splits. */
+static inline int
+ts_solid_first_axis (const int exemplar_of[TS_SOLID_AXES])
+{
+  return exemplar_of[0] >= 0 ? 0 : exemplar_of[1] >= 0 ? 1 : 2;
+}
+/* The first axis's view. */
 const TsSolidView *ts_solid_first_view (const TsSolidLevel *level);
 
 /* Voxel `to` takes voxel `from`'s value, recorded vote and sources, so
@@ -499,10 +507,10 @@ typedef struct
   float        *field;                /* per voxel, once started */
 } TsSolidPhasePlan;
 
-/* The plan from the finest levels of the distinct exemplars, `first`
- * being the first view's (ts_solid_first_view). */
+/* The plan from the finest levels of the distinct exemplars, which
+ * orientation a reads as exemplar_of[a] (-1: none). */
 TsStatus ts_solid_phase_plan (TsSolidPhasePlan *plan, const TsImage *const finest[],
-                              size_t exemplars, size_t first);
+                              size_t exemplars, const int exemplar_of[TS_SOLID_AXES]);
 /* At the finest level's start, if the plan has pieces: walls at the
  * start's necks, the phase guide's distances and field, and for stones
  * the E-step's rule, in `level`, whose orientation a reads exemplar
@@ -521,6 +529,14 @@ bool ts_solid_joins_pieces (const TsSolidLevel *level, const size_t xyz[3], cons
 
 /* --- E-step ---------------------------------------------------------------- */
 
+/* Whether the E-step reads each voxel's face neighbours: for
+ * continuation, the lone-voxel rule or the shear rule. */
+static inline bool
+ts_solid_reads_face_neighbours (const TsSolidLevel *level)
+{
+  return level->continuation > 0.0f || level->no_lone_voxels || level->shear > 0.0f;
+}
+
 /* Voxels whose `batch_of` entry equals `batch` become the vote of the
  * best-matched slice neighbourhood covering them (`matches` of the
  * orientations' M-steps, with their `t_offset`s; robust weight, lowered
@@ -533,5 +549,10 @@ size_t ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGr
                        const size_t t_offset[TS_SOLID_AXES], const uint8_t *batch_of,
                        uint8_t batch, const TsSolidHistogram *histogram,
                        TsSolidHistogramDelta delta);
+/* Asks for the cache lines the E-step's vote for voxel p will read and
+ * write (estep-prefetch.c). */
+void ts_solid_prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
+                              TsSolidMatch *const matches[TS_SOLID_AXES],
+                              const size_t t_offset[TS_SOLID_AXES], size_t p);
 
 #endif

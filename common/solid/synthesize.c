@@ -59,6 +59,7 @@ typedef struct
   TsCancel             midway;  /* raised by a stop; lets the steps ask midway */
   const char          *stage;   /* what a midway report says */
   Exemplar             exemplar[TS_SOLID_AXES];
+  const TsImage       *finest[TS_SOLID_AXES]; /* their pyramids' level 0 */
   int                  exemplar_of[TS_SOLID_AXES]; /* index into exemplar[], -1 = free */
   size_t               exemplars;
   int                  mirrored_axis; /* reads its exemplar mirrored, or -1 */
@@ -193,14 +194,6 @@ choose_handedness (Run *run)
   return TS_OK;
 }
 
-/* The finest pyramid levels of the distinct exemplars. */
-static void
-finest_exemplars (const Run *run, const TsImage *finest[TS_SOLID_AXES])
-{
-  for (size_t e = 0; e < run->exemplars; e++)
-    finest[e] = &run->exemplar[e].pyramid.level[0];
-}
-
 /* Working pyramids of the distinct exemplars, all with the same depth. */
 static TsStatus
 prepare_exemplars (Run *run, const TsImage *const exemplars[3])
@@ -244,18 +237,10 @@ prepare_exemplars (Run *run, const TsImage *const exemplars[3])
         status = ts_pyramid_build (&ex->working, run->levels, &ex->pyramid);
       if (status == TS_OK && run->params->cell_structure)
         ts_solid_cell_guide_finest (&ex->pyramid.level[0]);
+      run->finest[e] = &ex->pyramid.level[0];
     }
-  if (status != TS_OK)
-    return status;
-  /* The first view's, as ts_solid_first_view picks it. */
-  int a = run->exemplar_of[0] >= 0 ? 0 : run->exemplar_of[1] >= 0 ? 1 : 2;
-  if (!run->params->cell_structure && run->levels > 1)
-    {
-      const TsImage *finest[TS_SOLID_AXES];
-      finest_exemplars (run, finest);
-      status = ts_solid_phase_plan (&run->phases, finest, run->exemplars,
-                                    (size_t) run->exemplar_of[a]);
-    }
+  if (status == TS_OK && !run->params->cell_structure && run->levels > 1)
+    status = ts_solid_phase_plan (&run->phases, run->finest, run->exemplars, run->exemplar_of);
   if (status != TS_OK)
     return status;
   return run->params->cell_structure
@@ -530,11 +515,7 @@ synthesize_level (Run *run, size_t level)
   if (run->params->cell_structure)
     status = ts_solid_cell_guide_level (&run->cells, run->level.n, &run->midway);
   else if (level == 0 && run->levels > 1)
-    {
-      const TsImage *finest[TS_SOLID_AXES];
-      finest_exemplars (run, finest);
-      status = ts_solid_phase_plan_start (&run->phases, &run->level, finest, run->exemplar_of);
-    }
+    status = ts_solid_phase_plan_start (&run->phases, &run->level, run->finest, run->exemplar_of);
   if (status != TS_OK)
     return status;
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;

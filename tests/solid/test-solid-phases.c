@@ -73,8 +73,9 @@ static bool
 planned_stones (const TsImage *img, TsSolidPhasePlan *plan)
 {
   const TsImage *finest[1] = { img };
+  const int exemplar_of[TS_SOLID_AXES] = { 0, 0, 0 };
 
-  CHECK (ts_solid_phase_plan (plan, finest, 1, 0) == TS_OK, "the phase plan is made");
+  CHECK (ts_solid_phase_plan (plan, finest, 1, exemplar_of) == TS_OK, "the phase plan is made");
   return plan->stones;
 }
 
