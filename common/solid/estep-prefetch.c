@@ -20,8 +20,8 @@ ts_solid_prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const 
   size_t n = level->n, xyz[3] = { p % n, p / n % n, p / n / n };
 
   prefetch (level->value + p * TS_CHANNELS, 1);
-  /* The E-step's face neighbours' lines, wrapped here whatever the border rule (a
-   * wrong guess at a mirrored border only costs a miss): its
+  /* The E-step's face neighbours' lines, wrapped here whatever the
+   * border rule (a wrong guess at a mirrored border only costs a miss):
    * ts_border_index made the whole 128^3 run 1.5 s (6 %) slower. */
   if (ts_solid_reads_face_neighbours (level))
     for (int d = 1; d < TS_SOLID_AXES; d++)
@@ -57,4 +57,3 @@ ts_solid_prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const 
         }
     }
 }
-
