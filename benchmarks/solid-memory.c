@@ -69,8 +69,9 @@ main (int argc, char **argv)
     }
   clock_gettime (CLOCK_MONOTONIC, &t1);
   getrusage (RUSAGE_SELF, &usage);
-  printf ("%zu^3 from %zux%zu%s: %.2f s, peak RSS %.1f MiB\n", params.size, side, side,
-          with_sources ? " with sources" : "",
+  printf ("%zu^3 from %zux%zu%s, cell structure %s: %.2f s, peak RSS %.1f MiB\n", params.size, side,
+          side, with_sources ? " with sources" : "",
+          ts_solid_uses_cell_structure (&params, exemplars) ? "on" : "off",
           (double) (t1.tv_sec - t0.tv_sec) + (double) (t1.tv_nsec - t0.tv_nsec) * 1e-9,
           (double) usage.ru_maxrss / 1024.0);
   if (with_sources)

@@ -18,10 +18,12 @@
 # that sample misses are the measures' own spread on that seed, and
 # the summary counts our misses that it shares.
 #
-# With -c the volumes are synthesised with the cell structure
-# (solid-shapes -c).
+# By default the cell structure is chosen automatically (on for the
+# cells, off for the blobs and grains); with -c the volumes are
+# synthesised with it (solid-shapes -c), with -f without it (-f, the
+# free path).
 #
-# Usage: benchmarks/solid-seeds.py [-b BUILD] [-s SIZE] [-n] [-c] [SEED ...] [-k cells,blobs,grains]
+# Usage: benchmarks/solid-seeds.py [-b BUILD] [-s SIZE] [-n] [-c|-f] [SEED ...] [-k cells,blobs,grains]
 # e.g. OMP_NUM_THREADS=2 benchmarks/solid-seeds.py -s 64 1 2 3 4 5 6  (about a minute)
 #      OMP_NUM_THREADS=2 benchmarks/solid-seeds.py -s 128 1 2 3       (about 5 minutes)
 
@@ -70,7 +72,7 @@ def ratio(ours, truth):
 
 def run_seed(shapes, size, seed, kinds, new_sample, cell_structure):
     out = subprocess.run([shapes, str(size), str(seed)] + (["-n"] if new_sample else [])
-                         + (["-c"] if cell_structure else []) + kinds,
+                         + ([cell_structure] if cell_structure else []) + kinds,
                          capture_output=True, text=True)
     if out.returncode != 0:
         sys.exit(f"solid-shapes {size} {seed} failed ({out.returncode}): {out.stderr.strip()}")
@@ -102,8 +104,11 @@ def main():
     parser.add_argument("-k", "--kinds", default="cells,blobs,grains")
     parser.add_argument("-n", "--new-sample", action="store_true",
                         help="also score an independent sample of each truth solid")
-    parser.add_argument("-c", "--cell-structure", action="store_true",
-                        help="synthesise with the cell structure (solid-shapes -c)")
+    choice = parser.add_mutually_exclusive_group()
+    choice.add_argument("-c", "--cell-structure", dest="cell_structure", action="store_const",
+                        const="-c", help="synthesise with the cell structure (solid-shapes -c)")
+    choice.add_argument("-f", "--free", dest="cell_structure", action="store_const", const="-f",
+                        help="synthesise without the cell structure (solid-shapes -f)")
     args = parser.parse_args()
     shapes = os.path.join(args.build, "benchmarks", "solid-shapes")
     if not os.access(shapes, os.X_OK):

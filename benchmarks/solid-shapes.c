@@ -7,10 +7,11 @@
  * share of gradient energy within 10 degrees of the axes, over the
  * exemplar's) and the seam. An image path instead of a kind measures the
  * synthesis from its central SIZE x SIZE crop alone (no truth).
- * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-q QUALITY] [-n] [-c]
+ * Usage: solid-shapes SIZE SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-q QUALITY] [-n] [-c|-f]
  *                     [cells|blobs|grains|IMAGE.png]...
  * -c turns the cell structure guide on (TsSolidParams.cell_structure) for
- * the solids named after it.
+ * the solids named after it, -f off (the free path); by default it is
+ * chosen automatically, and the first line says which way.
  * -o DIR saves, per solid, NAME-slices.png: the exemplar, the truth's
  * middle slice across x (blank without truth), and ours across x, y, z
  * and the diagonal. Each row ends with the sharpness averaged over every
@@ -210,14 +211,15 @@ main (int argc, char **argv)
 {
   const char *dir = NULL;
   int iterations = 0, patch = 0, quality = 0;
-  bool new_sample = false, cell_structure = false;
+  bool new_sample = false;
+  TsCellStructure cell_structure = TS_CELL_STRUCTURE_AUTO;
   size_t n = argc > 2 ? (size_t) atol (argv[1]) : 0;
   uint32_t seed = argc > 2 ? (uint32_t) strtoul (argv[2], NULL, 10) : 0;
   int status = 0;
 
   if (n < 16 || n > 512)
     {
-      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-q QUALITY] [-n] [-c] "
+      fprintf (stderr, "usage: solid-shapes SIZE(16..512) SEED [-o DIR] [-i ITERATIONS] [-p PATCH] [-q QUALITY] [-n] [-c|-f] "
                        "[cells|blobs|grains|IMAGE.png]...\n");
       return 2;
     }
@@ -251,9 +253,9 @@ main (int argc, char **argv)
           free (ours);
           continue;
         }
-      if (!strcmp (name, "-c"))
+      if (!strcmp (name, "-c") || !strcmp (name, "-f"))
         {
-          cell_structure = true;
+          cell_structure = name[1] == 'c' ? TS_CELL_STRUCTURE_ON : TS_CELL_STRUCTURE_OFF;
           free (ours);
           continue;
         }
@@ -320,9 +322,10 @@ main (int argc, char **argv)
               ts_measure_axis_edge_share (&exemplar, &axis_share);
               for (size_t p = 0; p < voxels; p++)
                 wins[ts_solid_source_axis (sources[p]) % 3]++;
-              printf ("%-9s %zu^3 synthesised in %.2f s (exemplar anisotropy %.3f, axis-edge share "
-                      "%.3f against %.3f for edges in every direction; voxels copied "
-                      "by x %.0f %%, y %.0f %%, z %.0f %%)\n", base, n, seconds, anisotropy, axis_share,
+              printf ("%-9s %zu^3 synthesised in %.2f s, cell structure %s (exemplar anisotropy "
+                      "%.3f, axis-edge share %.3f against %.3f for edges in every direction; voxels "
+                      "copied by x %.0f %%, y %.0f %%, z %.0f %%)\n", base, n, seconds,
+                      ts_solid_uses_cell_structure (&params, ex3) ? "on" : "off", anisotropy, axis_share,
                       2.0 * TS_AXIS_EDGE_DEGREES / 90.0,
                       100.0 * (double) wins[0] / (double) voxels, 100.0 * (double) wins[1] / (double) voxels,
                       100.0 * (double) wins[2] / (double) voxels);

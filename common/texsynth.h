@@ -229,6 +229,20 @@ typedef enum
 #define TS_SOLID_MIN_SIZE 8
 #define TS_SOLID_MAX_SIZE 1024
 
+/* The cell structure, for cells with dark joints (stones in mortar,
+ * cobbles, paving, cracked mud): a 3D cell tessellation fitted to the
+ * exemplar guides where the walls go, so every slice shows whole
+ * polygonal cells with closed joints. Wrong for other kinds: round
+ * pebbles would turn into polygons. OFF and ON keep the values of the
+ * boolean this once was. */
+typedef enum
+{
+  TS_CELL_STRUCTURE_OFF  = 0,
+  TS_CELL_STRUCTURE_ON   = 1, /* needs opaque exemplars                    */
+  TS_CELL_STRUCTURE_AUTO = 2  /* on for opaque exemplars of separate light
+                                 stones in thin dark joints (cell-choice.c) */
+} TsCellStructure;
+
 typedef struct
 {
   size_t   size;               /* edge of the cube, TS_SOLID_MIN_SIZE ..   */
@@ -244,15 +258,19 @@ typedef struct
   bool     record_sources;     /* counts the source volume (4 bytes per
                                   voxel) in the estimate; required by
                                   ts_synthesize_solid_with_sources       */
-  bool     cell_structure;     /* for cells with dark joints (stones in
-                                  mortar, cobbles, paving): a 3D cell
-                                  tessellation fitted to the exemplar
-                                  guides where the walls go; needs opaque
-                                  exemplars; wrong for other kinds       */
+  TsCellStructure cell_structure; /* see TsCellStructure              */
 } TsSolidParams;
 
-/* Defaults: 128^3, periodic, default quality, histogram matching. */
+/* Defaults: 128^3, periodic, default quality, histogram matching, the
+ * cell structure chosen automatically. */
 void     ts_solid_params_init (TsSolidParams *params);
+
+/* Whether a run with `params` on `exemplars` (as ts_synthesize_solid
+ * takes them) uses the cell structure: TS_CELL_STRUCTURE_AUTO answers
+ * for the exemplars. Cheap (one pass over each exemplar); false if the
+ * exemplars cannot be read or memory runs out. */
+bool     ts_solid_uses_cell_structure (const TsSolidParams *params,
+                                       const TsImage *const exemplars[3]);
 
 /* `exemplars[a]` is the exemplar of the slices orthogonal to axis a, or
  * NULL to leave that orientation free; at least two must be given (the

@@ -67,9 +67,11 @@ query (void)
     { GIMP_PDB_INT32,    "quality",  "Search breadth per voxel (1-10, default 2)" },
     { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
     /* Last: every argument before it keeps its place. */
+    /* Once a boolean: FALSE and TRUE keep their meaning as 0 and 1. */
     { GIMP_PDB_INT32,    "cell-structure",
-      "Fit a 3D cell tessellation, for light cells in dark joints only (TRUE or FALSE, "
-      "default FALSE; needs an opaque layer)" },
+      "Fit a 3D cell tessellation, for light cells in dark joints: 0 off, 1 on (needs an "
+      "opaque layer), 2 automatic (on for an opaque layer of separate light stones in "
+      "thin dark joints, else off)" },
   };
   static const GimpParamDef heal_args[] =
   {
@@ -429,7 +431,8 @@ run_tileable (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome 
 
 /* GIMP 2.10 copies the stored bytes over `args` whatever their number:
  * only this struct's size, or the older one without cell_structure
- * (which then keeps its default), may be read. */
+ * (which then keeps its default, automatic), may be read. A stored
+ * TRUE/FALSE reads as on/off: the field kept its size and place. */
 static void
 load_last_solid_args (TsSolidArgs *args)
 {
@@ -437,6 +440,10 @@ load_last_solid_args (TsSolidArgs *args)
 
   if (stored == (gint) sizeof *args || stored == (gint) offsetof (TsSolidArgs, cell_structure))
     gimp_get_data (TS_PROC_SOLID, args);
+  /* Stored bytes are not to be trusted: a choice the dialog cannot show
+   * becomes the default. */
+  if (args->cell_structure < 0 || args->cell_structure > TS_PLUGIN_MAX_CELL_STRUCTURE)
+    args->cell_structure = TS_PLUGIN_CELL_STRUCTURE_AUTO;
 }
 
 static gboolean
@@ -461,7 +468,7 @@ run_solid (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *ou
                  sizeof args.path);
       args.quality = params[5].data.d_int32;
       args.seed = params[6].data.d_int32;
-      args.cell_structure = params[7].data.d_int32 != 0;
+      args.cell_structure = params[7].data.d_int32;  /* ts_solid_args_check checks it */
     }
   else
     load_last_solid_args (&args);

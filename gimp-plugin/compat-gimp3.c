@@ -479,11 +479,14 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
       gimp_procedure_add_string_argument (procedure, "path", ts_arg_label ("path"),
                                           ts_arg_tooltip ("path"), path, G_PARAM_READWRITE);
       add_quality_and_seed (procedure, "solid-quality");
-      /* After seed, as in GIMP 2.10: positional calls keep their meaning. */
-      gimp_procedure_add_boolean_argument (procedure, "cell-structure",
-                                           ts_arg_label ("cell-structure"),
-                                           ts_arg_tooltip ("cell-structure"), FALSE,
-                                           G_PARAM_READWRITE);
+      /* After seed, as in GIMP 2.10: positional calls keep their meaning.
+       * 0 off, 1 on, 2 automatic (the ops' default). */
+      gimp_procedure_add_int_argument (procedure, "cell-structure",
+                                       ts_arg_label ("cell-structure"),
+                                       ts_arg_tooltip ("cell-structure"),
+                                       TS_PLUGIN_CELL_STRUCTURE_OFF,
+                                       TS_PLUGIN_MAX_CELL_STRUCTURE,
+                                       TS_PLUGIN_CELL_STRUCTURE_AUTO, G_PARAM_READWRITE);
       gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
                                              _("An image of the volume's three middle slices"),
                                              FALSE, G_PARAM_READWRITE);

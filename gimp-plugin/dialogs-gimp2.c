@@ -64,21 +64,44 @@ form_int (Form *form, const gchar *name, gint *value, gint min, gint max, gint s
   g_free (label);
 }
 
-/* Where to sample from: a choice by name, not a number. */
+/* An integer argument shown as a choice by name, not a number: `combo`
+ * is a GimpIntComboBox of its choices. */
 static void
-form_sample_from (Form *form, gint *value)
+form_int_combo (Form *form, const gchar *name, GtkWidget *combo, gint *value)
 {
-  gchar *label = label_text ("sample-from");
-  GtkWidget *combo = gimp_int_combo_box_new (ts_sample_from_label (0), 0,
-                                             ts_sample_from_label (1), 1,
-                                             ts_sample_from_label (2), 2, NULL);
+  gchar *label = label_text (name);
 
   gimp_int_combo_box_connect (GIMP_INT_COMBO_BOX (combo), *value,
                               G_CALLBACK (gimp_int_combo_box_get_active), value);
-  gimp_help_set_help_data (combo, ts_arg_tooltip ("sample-from"), NULL);
+  gimp_help_set_help_data (combo, ts_arg_tooltip (name), NULL);
   gimp_table_attach_aligned (GTK_TABLE (form->table), 0, form->rows++, label, 0.0, 0.5,
                              combo, 2, FALSE);
   g_free (label);
+}
+
+static void
+form_sample_from (Form *form, gint *value)
+{
+  form_int_combo (form, "sample-from",
+                  gimp_int_combo_box_new (ts_sample_from_label (0), 0,
+                                          ts_sample_from_label (1), 1,
+                                          ts_sample_from_label (2), 2, NULL),
+                  value);
+}
+
+/* Automatic first: the default, and right for most layers. */
+static void
+form_cell_structure (Form *form, gint *value)
+{
+  form_int_combo (form, "cell-structure",
+                  gimp_int_combo_box_new (
+                    ts_cell_structure_label (TS_PLUGIN_CELL_STRUCTURE_AUTO),
+                    TS_PLUGIN_CELL_STRUCTURE_AUTO,
+                    ts_cell_structure_label (TS_PLUGIN_CELL_STRUCTURE_ON),
+                    TS_PLUGIN_CELL_STRUCTURE_ON,
+                    ts_cell_structure_label (TS_PLUGIN_CELL_STRUCTURE_OFF),
+                    TS_PLUGIN_CELL_STRUCTURE_OFF, NULL),
+                  value);
 }
 
 static void
@@ -248,7 +271,7 @@ ts_solid_dialog2 (TsSolidArgs *args)
   form_int (&form, "size", &args->size, TS_PLUGIN_MIN_SOLID, TS_PLUGIN_MAX_SOLID,
             TS_PLUGIN_MAX_SOLID);
   form_path (&form, args->path, sizeof args->path, &entry);
-  form_toggle (&form, "cell-structure", &args->cell_structure);
+  form_cell_structure (&form, &args->cell_structure);
   form_int (&form, "solid-quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
             TS_PLUGIN_MAX_QUALITY);
   form_seed (&form, &seed, &randomize);

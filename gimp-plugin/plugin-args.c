@@ -43,6 +43,7 @@ ts_solid_args_init (TsSolidArgs *args)
   memset (args, 0, sizeof *args);
   args->size = TS_PLUGIN_DEFAULT_SOLID;
   args->quality = TS_PLUGIN_DEFAULT_QUALITY;
+  args->cell_structure = TS_PLUGIN_CELL_STRUCTURE_AUTO;  /* the ops' default */
   g_strlcpy (args->path, path, sizeof args->path);
   g_free (path);
 }
@@ -135,6 +136,9 @@ ts_solid_args_check (const TsSolidArgs *args, gint n_exemplars)
                             n_exemplars);
   if ((message = check_quality_and_seed (args->quality, args->seed)))
     return message;
+  if (args->cell_structure < 0 || args->cell_structure > TS_PLUGIN_MAX_CELL_STRUCTURE)
+    return g_strdup_printf (_("Cell structure must be 0 (off), 1 (on) or 2 (automatic) "
+                              "(got %d)."), args->cell_structure);
   if (!args->path[0] || strnlen (args->path, sizeof args->path) >= sizeof args->path)
     return g_strdup (_("The path of the volume file is empty or too long."));
   if (!has_volume_extension (args->path))
@@ -195,10 +199,11 @@ static const struct
        "(raw floats), .dds (volume texture) or .png (slices)") },
   { "cell-structure", N_("Cell structure"),
     N_("For layers of light cells in dark joints, such as stones in mortar, cobbles "
-       "or paving: a 3D tessellation fitted to the layer decides where the walls "
-       "between cells go, so every slice shows whole cells with closed joints. Wrong "
-       "for other textures (a relief of cracks turns into spots). Needs an opaque "
-       "layer") },
+       "or cracked mud: a 3D tessellation fitted to the layer decides where the walls "
+       "between cells go, so every slice shows whole cells with closed joints. "
+       "Automatic (2): on for an opaque layer of separate light stones in thin dark "
+       "joints, off otherwise. On (1): always; needs an opaque layer, and is wrong for "
+       "other textures (round pebbles turn into polygons). Off (0): never") },
 };
 
 static gsize
@@ -237,6 +242,17 @@ ts_sample_from_label (gint value)
   };
 
   return value >= 0 && value <= TS_PLUGIN_MAX_SAMPLE_FROM ? _(labels[value]) : NULL;
+}
+
+const gchar *
+ts_cell_structure_label (gint value)
+{
+  static const gchar *const labels[TS_PLUGIN_MAX_CELL_STRUCTURE + 1] =
+  {
+    N_("Off"), N_("On"), N_("Automatic")
+  };
+
+  return value >= 0 && value <= TS_PLUGIN_MAX_CELL_STRUCTURE ? _(labels[value]) : NULL;
 }
 
 gint

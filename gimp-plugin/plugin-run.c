@@ -530,8 +530,9 @@ ts_plugin_solid (const TsExemplar  *exemplars,
   gboolean existed = g_stat (args->path, &before) == 0;
 
   /* The engine refuses these too, but only on the console (a sink cannot
-   * return an error); the user should learn why and what to do. */
-  for (gint i = 0; args->cell_structure && i < n_exemplars; i++)
+   * return an error); the user should learn why and what to do. Only an
+   * explicit "on": automatic turns itself off for a translucent layer. */
+  for (gint i = 0; args->cell_structure == TS_PLUGIN_CELL_STRUCTURE_ON && i < n_exemplars; i++)
     {
       gfloat lowest, highest;
 
@@ -542,7 +543,7 @@ ts_plugin_solid (const TsExemplar  *exemplars,
           g_set_error (error, TS_PLUGIN_ERROR, 0,
                        _("The cell structure needs an opaque exemplar, but the layer (or its "
                          "selected part) has transparent pixels: remove its alpha channel, "
-                         "select a rectangle, or turn the cell structure off."));
+                         "select a rectangle, or set the cell structure to automatic or off."));
           return FALSE;
         }
     }

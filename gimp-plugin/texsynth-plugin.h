@@ -41,6 +41,11 @@
 #define TS_PLUGIN_MAX_CONTEXT     16384
 #define TS_PLUGIN_MAX_SAMPLE_FROM 2      /* all around, sides, above and below */
 #define TS_PLUGIN_MAX_UNCROP      100    /* percent of the side added        */
+/* The cell structure's choices, the ops' TsCellStructure values. */
+#define TS_PLUGIN_CELL_STRUCTURE_OFF  0
+#define TS_PLUGIN_CELL_STRUCTURE_ON   1
+#define TS_PLUGIN_CELL_STRUCTURE_AUTO 2
+#define TS_PLUGIN_MAX_CELL_STRUCTURE  TS_PLUGIN_CELL_STRUCTURE_AUTO
 
 /* Flat structs: GIMP 2.10 stores last values as raw bytes. */
 typedef struct
@@ -66,7 +71,10 @@ typedef struct
   gchar    path[TS_PLUGIN_PATH_MAX];
   gint     quality;
   gint     seed;
-  gboolean cell_structure;  /* texsynth:volume-save's cell-structure */
+  /* texsynth:volume-save's cell-structure: 0 off, 1 on, 2 automatic. A
+   * gint where a gboolean (same size) once was, so stored last values
+   * keep their layout and FALSE/TRUE keep their meaning. */
+  gint     cell_structure;
 } TsSolidArgs;
 
 /* The three heal procedures: context and sample-from for healing a
@@ -103,6 +111,8 @@ const gchar *ts_arg_tooltip (const gchar *name);
 /* The translated name of a sample-from choice (0 .. TS_PLUGIN_MAX_SAMPLE_FROM),
  * for the dialogs' combo boxes; NULL out of range. */
 const gchar *ts_sample_from_label (gint value);
+/* The same for a cell-structure choice (0 .. TS_PLUGIN_MAX_CELL_STRUCTURE). */
+const gchar *ts_cell_structure_label (gint value);
 
 /* A seed for an interactive run: differs from run to run, and is then
  * stored with the last values so that Repeat gives the same result. */

@@ -45,6 +45,12 @@ enum_start (texsynth_volume_save_axis)
   enum_value (TEXSYNTH_VOLUME_SAVE_AXIS_Z, "z", N_("Z"))
 enum_end (TexsynthVolumeSaveAxis)
 
+enum_start (texsynth_volume_save_cells)
+  enum_value (TEXSYNTH_VOLUME_SAVE_CELLS_OFF, "off", N_("Off"))
+  enum_value (TEXSYNTH_VOLUME_SAVE_CELLS_ON, "on", N_("On"))
+  enum_value (TEXSYNTH_VOLUME_SAVE_CELLS_AUTO, "auto", N_("Automatic"))
+enum_end (TexsynthVolumeSaveCells)
+
 enum_start (texsynth_volume_save_free_axis)
   enum_value (TEXSYNTH_VOLUME_SAVE_FREE_NONE, "none", N_("None"))
   enum_value (TEXSYNTH_VOLUME_SAVE_FREE_X, "x", N_("X"))
@@ -76,6 +82,9 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSaveFreeAxis,
   description (_("Leave the slices across this axis unconstrained, so only "
                  "the other two orientations must look like their exemplars"))
 
+/* The cell structure's enum, registered by this op (volume-properties.h). */
+#define TS_VOLUME_OP_CELLS      TexsynthVolumeSaveCells
+#define TS_VOLUME_OP_CELLS_NAME texsynth_volume_save_cells
 #include "volume-properties.h"
 
 #else
@@ -91,6 +100,12 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSaveFreeAxis,
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wunused-const-variable"
 #include "gegl-op.h"
+
+/* The property's values are the engine's (TS_VOLUME_OP_FILL_PARAMS). */
+_Static_assert ((int) TEXSYNTH_VOLUME_SAVE_CELLS_OFF == (int) TS_CELL_STRUCTURE_OFF
+                && (int) TEXSYNTH_VOLUME_SAVE_CELLS_ON == (int) TS_CELL_STRUCTURE_ON
+                && (int) TEXSYNTH_VOLUME_SAVE_CELLS_AUTO == (int) TS_CELL_STRUCTURE_AUTO,
+                "the cell-structure property's values are the engine's");
 #pragma GCC diagnostic pop
 
 #include "volume/volume.h"

@@ -32,6 +32,12 @@ enum_start (texsynth_volume_slice_layout)
   enum_value (TEXSYNTH_VOLUME_SLICE_LAYOUT_ATLAS, "atlas", N_("Atlas of all slices"))
 enum_end (TexsynthVolumeSliceLayout)
 
+enum_start (texsynth_volume_slice_cells)
+  enum_value (TEXSYNTH_VOLUME_SLICE_CELLS_OFF, "off", N_("Off"))
+  enum_value (TEXSYNTH_VOLUME_SLICE_CELLS_ON, "on", N_("On"))
+  enum_value (TEXSYNTH_VOLUME_SLICE_CELLS_AUTO, "auto", N_("Automatic"))
+enum_end (TexsynthVolumeSliceCells)
+
 enum_start (texsynth_volume_slice_free_axis)
   enum_value (TEXSYNTH_VOLUME_SLICE_FREE_NONE, "none", N_("None"))
   enum_value (TEXSYNTH_VOLUME_SLICE_FREE_X, "x", N_("X"))
@@ -61,6 +67,9 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSliceFreeAxis,
                  "the other two orientations must look like their exemplars "
                  "(suits exemplars such as wood, whose cross-section differs)"))
 
+/* The cell structure's enum, registered by this op (volume-properties.h). */
+#define TS_VOLUME_OP_CELLS      TexsynthVolumeSliceCells
+#define TS_VOLUME_OP_CELLS_NAME texsynth_volume_slice_cells
 #include "volume-properties.h"
 
 #else
@@ -76,6 +85,12 @@ property_enum (free_axis, _("Free orientation"), TexsynthVolumeSliceFreeAxis,
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wunused-const-variable"
 #include "gegl-op.h"
+
+/* The property's values are the engine's (TS_VOLUME_OP_FILL_PARAMS). */
+_Static_assert ((int) TEXSYNTH_VOLUME_SLICE_CELLS_OFF == (int) TS_CELL_STRUCTURE_OFF
+                && (int) TEXSYNTH_VOLUME_SLICE_CELLS_ON == (int) TS_CELL_STRUCTURE_ON
+                && (int) TEXSYNTH_VOLUME_SLICE_CELLS_AUTO == (int) TS_CELL_STRUCTURE_AUTO,
+                "the cell-structure property's values are the engine's");
 #pragma GCC diagnostic pop
 
 #include "volume/layout.h"

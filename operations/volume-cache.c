@@ -96,9 +96,11 @@ compute_key (const TsSolidParams *params, const TsImage *const exemplars[3],
   hash_u64 (sum, (guint64) (gint64) params->patch_size);
   hash_u64 (sum, (guint64) (gint64) params->max_iterations);
   hash_u64 (sum, params->histogram_matching);
-  /* Only when set: volumes cached before the option keep their keys. */
-  if (params->cell_structure)
-    hash_u64 (sum, params->cell_structure);
+  /* What the run will use, so automatic and explicit choices share a
+   * volume; only when on: volumes cached before the option keep their
+   * keys. */
+  if (ts_solid_uses_cell_structure (params, exemplars))
+    hash_u64 (sum, TS_CELL_STRUCTURE_ON);
   for (int a = 0; a < 3; a++)
     {
       const TsImage *ex = exemplars[a];

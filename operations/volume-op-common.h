@@ -45,7 +45,7 @@ TsSolidParams ts_volume_op_default_params (void);
     (params)->patch_size = patch_;                                           \
     (params)->max_iterations = (o)->iterations;                              \
     (params)->histogram_matching = (o)->histogram_matching;                  \
-    (params)->cell_structure = (o)->cell_structure;                          \
+    (params)->cell_structure = (TsCellStructure) (o)->cell_structure;        \
     (params)->memory_limit = ts_op_memory_limit ((o)->memory_limit);         \
   } while (0)
 

@@ -44,12 +44,22 @@ property_boolean (histogram_matching, _("Histogram matching"),
                  "exemplars', so rare colours are neither lost nor overused"))
   ui_meta     ("role", "advanced")
 
-property_boolean (cell_structure, _("Cell structure"), ts_volume_op_default_params ().cell_structure)
-  description (_("For exemplars of cells, such as stones in mortar, cobbles "
-                 "or cracked mud: a 3D tessellation fitted to the exemplar "
-                 "decides where the walls between cells go, so every slice "
-                 "shows whole cells with closed joints. Needs an opaque "
-                 "exemplar"))
+/* An enum property whose type each op registers under its own name
+ * (TS_VOLUME_OP_CELLS and TS_VOLUME_OP_CELLS_NAME, defined before this
+ * file is included): gegl-op.h pastes the name, so it is passed through
+ * a macro of our own that expands it first. */
+#ifndef TS_VOLUME_CELL_STRUCTURE_PROPERTY
+#define TS_VOLUME_CELL_STRUCTURE_PROPERTY(enm, enum_name)                            \
+  property_enum (cell_structure, _("Cell structure"), enm, enum_name,               \
+                 ts_volume_op_default_params ().cell_structure)                     \
+    description (_("For exemplars of cells, such as stones in mortar, cobbles "     \
+                   "or cracked mud: a 3D tessellation fitted to the exemplar "      \
+                   "decides where the walls between cells go, so every slice "      \
+                   "shows whole cells with closed joints. Automatic turns it on "   \
+                   "for opaque exemplars of separate light stones in thin dark "    \
+                   "joints; On needs an opaque exemplar"))
+#endif
+TS_VOLUME_CELL_STRUCTURE_PROPERTY (TS_VOLUME_OP_CELLS, TS_VOLUME_OP_CELLS_NAME)
 
 property_int (memory_limit, _("Memory limit (MiB)"), 0)
   description (_("Refuse, with a message saying how much it would need, a "

@@ -18,6 +18,17 @@ ts_solid_params_init (TsSolidParams *params)
   params->periodic = true;
   params->quality = TS_DEFAULT_QUALITY;
   params->histogram_matching = true;
+  params->cell_structure = TS_CELL_STRUCTURE_AUTO;
+}
+
+void
+ts_solid_resolve_params (const TsSolidParams *params, const TsImage *const exemplars[3],
+                         TsSolidParams *resolved)
+{
+  *resolved = *params;
+  resolved->cell_structure = ts_solid_uses_cell_structure (params, exemplars)
+                               ? TS_CELL_STRUCTURE_ON
+                               : TS_CELL_STRUCTURE_OFF;
 }
 
 static TsStatus
@@ -71,10 +82,17 @@ validate_without_memory (const TsSolidParams *params, const TsImage *const exemp
                                       error);
   if (status != TS_OK)
     return status;
+  if (params->cell_structure != TS_CELL_STRUCTURE_OFF && params->cell_structure != TS_CELL_STRUCTURE_ON
+      && params->cell_structure != TS_CELL_STRUCTURE_AUTO)
+    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
+                    "the cell structure must be off (%d), on (%d) or automatic (%d), got %d",
+                    TS_CELL_STRUCTURE_OFF, TS_CELL_STRUCTURE_ON, TS_CELL_STRUCTURE_AUTO,
+                    (int) params->cell_structure);
   for (int a = 0; a < 3; a++)
     if (exemplars[a])
       {
-        status = check_exemplar (exemplars[a], a, params->cell_structure, error);
+        status = check_exemplar (exemplars[a], a,
+                                 params->cell_structure == TS_CELL_STRUCTURE_ON, error);
         if (status != TS_OK)
           return status;
         given++;
@@ -133,11 +151,13 @@ ts_solid_estimate_memory (const TsSolidParams *params, const TsImage *const exem
                           size_t *bytes, TsError *error)
 {
   TsStatus status = validate_without_memory (params, exemplars, error);
+  TsSolidParams resolved;
   double estimate;
 
   if (status != TS_OK)
     return status;
-  estimate = estimate_bytes (params, exemplars, ts_schedule_threads ());
+  ts_solid_resolve_params (params, exemplars, &resolved);
+  estimate = estimate_bytes (&resolved, exemplars, ts_schedule_threads ());
   return ts_store_estimate (estimate, bytes, error);
 }
 

@@ -107,9 +107,20 @@ void   ts_solid_mirror_image (TsImage *image);
 /* Sources of `axis` back to the unmirrored exemplar's pixels. */
 void   ts_solid_unmirror_sources (TsSolidSource *sources, size_t voxels, int axis, size_t width);
 
+/* `params` with the cell structure's automatic choice made
+ * (cell-choice.c): on or off. The engine's steps see only these. */
+void ts_solid_resolve_params (const TsSolidParams *params, const TsImage *const exemplars[3],
+                              TsSolidParams *resolved);
+/* Whether one exemplar is cells for the automatic choice: opaque, its
+ * light phase in stones, their joints thin (`*thin_share`: the share of
+ * the joints' middle line within 1.5 pixels of a stone, 0 if not looked
+ * at). */
+TsStatus ts_solid_cells_in_joints (const TsImage *ex, bool *cells, double *thin_share);
+
 /* Whether the finest level weighs votes by the position histogram
  * (position-histogram.c): with histogram matching, and not with the cell
- * structure (synthesize.c, TS_SOLID_POSITION_WEIGHT). */
+ * structure (synthesize.c, TS_SOLID_POSITION_WEIGHT). Resolved params
+ * only. */
 bool ts_solid_uses_positions (const TsSolidParams *params);
 
 /* The cell structure guide (cell-guide.c). A signed distance d (pixels,

@@ -532,10 +532,13 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
                                   void *user_data, TsError *error)
 {
   Run run;
+  TsSolidParams resolved;
   TsStatus status = ts_solid_params_validate (params, exemplars, error);
 
   if (status != TS_OK)
     return status;
+  ts_solid_resolve_params (params, exemplars, &resolved);
+  params = &resolved;
   if (!volume)
     return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no volume to write into");
   if (!sources != !params->record_sources)

@@ -102,12 +102,13 @@ class ScriptFu2:
         return "(let* (%s) %s)" % (self.load(path), body)
 
     def solid_call(self, size, volume, quality, seed, cell_structure):
-        return "(plug-in-texsynth-solid RUN-NONINTERACTIVE img %s %d %s %d %d %s)" % (
+        return "(plug-in-texsynth-solid RUN-NONINTERACTIVE img %s %d %s %d %d %d)" % (
             self.drawables(), size, quote(volume), quality, seed, cell_structure)
 
-    def solid_report(self, tag, path, size, volume, quality, seed, cell_structure="FALSE",
+    def solid_report(self, tag, path, size, volume, quality, seed, cell_structure=0,
                      save=None):
-        """save: where to export the top layer, the slice across x."""
+        """cell_structure: 0 off, 1 on, 2 automatic. save: where to export
+        the top layer, the slice across x."""
         body = "(let* ((out (car %s)) (layer %s)) " % (
             self.solid_call(size, volume, quality, seed, cell_structure), self.top_layer("out"))
         if save:
@@ -120,7 +121,7 @@ class ScriptFu2:
         values, runs it with RUN-WITH-LAST-VALS and exports the top layer."""
         store = '(gimp-procedural-db-set-data "plug-in-texsynth-solid" %d (vector %s))' % (
             len(last_values), " ".join(str(b) for b in last_values))
-        call = ("(plug-in-texsynth-solid RUN-WITH-LAST-VALS img %s 0 %s 0 0 FALSE)"
+        call = ("(plug-in-texsynth-solid RUN-WITH-LAST-VALS img %s 0 %s 0 0 0)"
                 % (self.drawables(), quote("")))
         body = "%s (let* ((out (car %s)) (layer %s)) %s %s)" % (
             store, call, self.top_layer("out"), self.save("out", "layer", save),
@@ -133,7 +134,7 @@ class ScriptFu2:
     def call_render(self, tag, path, w, h, tileable, quality, seed):
         return self.marked(tag, self.render_call(w, h, tileable, quality, seed), path)
 
-    def call_solid(self, tag, path, size, volume, quality, seed, cell_structure="FALSE"):
+    def call_solid(self, tag, path, size, volume, quality, seed, cell_structure=0):
         return self.marked(tag, self.solid_call(size, volume, quality, seed, cell_structure), path)
 
 

@@ -80,17 +80,29 @@ render_b = os.path.join(work, "render-b.png")
 render_shape = os.path.join(work, "render-shape.png")
 tileable = os.path.join(work, "tileable.png")
 volume = os.path.join(work, "volume.vol")
-# The same solid without and with the cell structure: its volume and the
-# exported slice across x.
+# The same solid with the cell structure off, on and automatic (which must
+# choose it for these stones): its volume and the exported slice across x.
+CELLS_OFF, CELLS_ON, CELLS_AUTO = 0, 1, 2
 CELLS_SIZE = 32
 plain_volume = os.path.join(work, "plain.vol")
 cells_volume = os.path.join(work, "cells.vol")
+# A .vol file's header holds its name: automatic's volume gets the same
+# name as on's, in a folder of its own, so the two files may be compared.
+os.makedirs(os.path.join(work, "auto"))
+auto_volume = os.path.join(work, "auto", "cells.vol")
 plain_slice = os.path.join(work, "plain-x.png")
 cells_slice = os.path.join(work, "cells-x.png")
+auto_slice = os.path.join(work, "auto-x.png")
+CELL_RUNS = (("solidplain", plain_volume, plain_slice),
+             ("solidcells", cells_volume, cells_slice),
+             ("solidauto", auto_volume, auto_slice))
 # GIMP 2.10 keeps last values as the bytes of TsSolidArgs: size, path[4096],
-# quality, seed, then cell_structure, which older plug-ins' structs lack.
-LAST_VALUES = [("lastold", None, os.path.join(work, "last-old-x.png")),
-               ("lastcells", 1, os.path.join(work, "last-cells-x.png"))]
+# quality, seed, then cell_structure (once a boolean, now 0/1/2), which
+# older plug-ins' structs lack: those get the default, automatic. Each
+# entry: tag, stored cell_structure, export, the slice it must equal.
+LAST_VALUES = [("lastold", None, os.path.join(work, "last-old-x.png"), cells_slice),
+               ("lastplain", CELLS_OFF, os.path.join(work, "last-plain-x.png"), plain_slice),
+               ("lastcells", CELLS_ON, os.path.join(work, "last-cells-x.png"), cells_slice)]
 
 
 def last_values(cell_structure):
@@ -130,16 +142,21 @@ errors = [
 ]
 if has_solid_ops:
     batch.append(sf.solid_report("solid", bark, 16, volume, 1, 2))
-    batch.append(sf.solid_report("solidplain", stones, CELLS_SIZE, plain_volume, 1, 4,
-                                 "FALSE", save=plain_slice))
-    batch.append(sf.solid_report("solidcells", stones, CELLS_SIZE, cells_volume, 1, 4,
-                                 "TRUE", save=cells_slice))
+    for (tag, path, save), cells in zip(CELL_RUNS, (CELLS_OFF, CELLS_ON, CELLS_AUTO)):
+        batch.append(sf.solid_report(tag, stones, CELLS_SIZE, path, 1, 4, cells, save=save))
+    # Automatic on transparent corners: not refused as "on" is (the
+    # engine leaves the cell structure off).
+    batch.append(sf.solid_report("autoalpha", brick_rgba, 16, os.path.join(work, "auto-a.vol"),
+                                 1, 1, CELLS_AUTO))
     if gimp.version == 2:
         batch += [sf.solid_last_values_report(tag, stones, last_values(cells), save)
-                  for tag, cells, save in LAST_VALUES]
-    # Transparent corners: refused with a reason before anything runs.
+                  for tag, cells, save, _ in LAST_VALUES]
+    # Transparent corners with the cell structure on: refused with a
+    # reason before anything runs.
     errors.append(sf.call_solid("cellsalpha", brick_rgba, 16, os.path.join(work, "a.vol"), 1, 1,
-                                "TRUE"))
+                                CELLS_ON))
+    # No fourth choice.
+    errors.append(sf.call_solid("badcells", stones, 16, os.path.join(work, "b.vol"), 1, 1, 3))
 if gimp.version >= 3:
     batch.append(sf.filter_report("filter", brick))
 
@@ -217,8 +234,7 @@ def volume_slice_x(path, size, png):
 
 
 def check_cell_structure():
-    for tag, path, slice_png in (("solidplain", plain_volume, plain_slice),
-                                 ("solidcells", cells_volume, cells_slice)):
+    for tag, path, slice_png in CELL_RUNS:
         r = fields(lines, "TSRESULT " + tag)
         if tsops.check(r is not None, "%s: returns an image" % tag):
             w, h, layers = map(int, r[:3])
@@ -242,9 +258,18 @@ def check_cell_structure():
         diff = tsops.max_abs_diff(tsops.load(plain_slice)[2], tsops.load(cells_slice)[2])
         tsops.check(diff > 0.2, "solid: the cell structure changes the slices with the same "
                     "seed (max difference %.3f)" % diff)
-    # Last values: the older struct is read without cell_structure (off),
-    # this one with it.
-    for (tag, cells, save), same_as in zip(LAST_VALUES, (plain_slice, cells_slice)):
+    # Automatic chooses the cell structure for light stones in dark joints:
+    # the very volume of "on".
+    tsops.check(os.path.isfile(auto_volume) and os.path.isfile(cells_volume) and
+                filecmp.cmp(auto_volume, cells_volume, shallow=False),
+                "solid: automatic gives the stones the cell structure (the volume of on)")
+    r = fields(lines, "TSRESULT autoalpha")
+    tsops.check(r is not None and list(map(int, r[:3])) == [16, 16, 3],
+                "solid: automatic on a layer with transparent pixels is not refused "
+                "(got %s)" % (r,))
+    # Last values: the older struct is read without cell_structure (the
+    # default, automatic), the current one with it.
+    for tag, cells, save, same_as in LAST_VALUES:
         if gimp.version != 2 or not os.path.isfile(same_as):
             continue
         r = fields(lines, "TSRESULT " + tag)
@@ -277,6 +302,9 @@ if has_solid_ops:
     tsops.check(text is not None and "needs an opaque exemplar" in text,
                 "cell structure on a layer with transparent pixels: an error saying why (%r)"
                 % text)
+    # GIMP 3's Script-Fu checks the range itself (cell-structure is the 8th).
+    calling_error("badcells", r"[Cc]ell structure must be 0 \(off\), 1 \(on\) or 2 "
+                  r"\(automatic\) \(got 3\)|argument 8 .*value 3 out of range: 0 to 2")
 
 if has_solid_ops:
     r = fields(lines, "TSRESULT solid")

@@ -294,7 +294,7 @@ main (int argc, char **argv)
 
   snprintf (name[4], sizeof name[4], "solid %zu^3, cell structure", solid);
   job_solid (&job, name[4], &ex, solid);
-  job.solid.cell_structure = true;
+  job.solid.cell_structure = TS_CELL_STRUCTURE_ON;
   run_cancels (&job, early, sizeof early / sizeof early[0], bound);
 
   CHECK (mirror_tile (&ex, large, &big), "large exemplar allocation");

@@ -35,7 +35,7 @@ typedef struct
   double      completeness_share; /* of the truth's completeness, at most */
   double      axis_edges;         /* over the exemplar's, at most         */
   double      specks_share;       /* of the truth's specks, at most       */
-  bool        cell_structure;     /* TsSolidParams.cell_structure          */
+  TsCellStructure cell_structure; /* TsSolidParams.cell_structure        */
   double      sections;           /* light sections over the exemplar's,
                                      at least (phase-thickness.h); 0 = none */
   double      tones;              /* lightness spread within sections, of
@@ -55,7 +55,7 @@ typedef struct
 } Ratios;
 
 static bool
-measure_seed (const char *kind, bool cell_structure, uint32_t seed, Ratios *r)
+measure_seed (const char *kind, TsCellStructure cell_structure, uint32_t seed, Ratios *r)
 {
   size_t n = SIDE;
   float *truth = slice_truth_lab (kind, n, seed);
@@ -140,7 +140,7 @@ test_kind (const Case *c)
   printf ("%-7s%s mean of %d seeds: sharpness %.3f, coherence %.3f, completeness %.3f, specks %.2f, "
           "tones %.2f, shades %.2f, thick %.2f x the truth's; axis-edges %.3f, seam %.3f, "
           "sections %.2f\n",
-          c->kind, c->cell_structure ? " (cell structure)" : "", SEEDS, mean.sharpness,
+          c->kind, c->cell_structure == TS_CELL_STRUCTURE_ON ? " (cell structure)" : "", SEEDS, mean.sharpness,
           mean.coherence, mean.completeness, mean.specks, mean.tones, mean.shades, mean.thick,
           mean.axis_edges, mean.seam, mean.sections);
   CHECK (mean.axis_edges <= c->axis_edges, "%s: axis-edges %.3f <= %.2f", c->kind, mean.axis_edges,
@@ -192,7 +192,7 @@ test_cell_structure_refuses_transparency (void)
   const TsImage *ex3[3] = { &ex, &ex, &ex };
   ts_solid_params_init (&params);
   params.size = n;
-  params.cell_structure = true;
+  params.cell_structure = TS_CELL_STRUCTURE_ON;
   CHECK (ts_synthesize_solid (&params, ex3, volume, NULL, NULL, &error) == TS_ERROR_BAD_PARAMETER
            && strstr (error.message, "needs opaque exemplars"),
          "a translucent exemplar with the cell structure: %s", error.message);
@@ -277,9 +277,9 @@ main (void)
      * (phase-guide.c, neck-walls.c), whose stones merged. Their
      * axis-edges 1.00 (1.03 before stop 66, 1.08 without the guide);
      * sharpness 0.92 x and coherence 0.98 x before stop 66. */
-    { "cells", 0.90, 1.15, 1.08, 4.0, false, 0.70, 0.0, 0.0, 0.0 },
-    { "blobs", 0.90, 1.15, 1.08, 1.42, false, 0.0, 0.0, 0.0, 0.0 },
-    { "grains", 0.90, 1.15, 1.08, 2.1, false, 0.0, 0.0, 0.0, 0.0 },
+    { "cells", 0.90, 1.15, 1.08, 4.0, TS_CELL_STRUCTURE_OFF, 0.70, 0.0, 0.0, 0.0 },
+    { "blobs", 0.90, 1.15, 1.08, 1.42, TS_CELL_STRUCTURE_AUTO, 0.0, 0.0, 0.0, 0.0 },
+    { "grains", 0.90, 1.15, 1.08, 2.1, TS_CELL_STRUCTURE_AUTO, 0.0, 0.0, 0.0, 0.0 },
     /* With the cell structure, mean of seeds 1-3: sharpness 1.01,
      * coherence 0.98, completeness 1.00, specks 1.44 x the truth's;
      * axis-edges 1.04; light sections 0.82 x the exemplar's (the
@@ -301,7 +301,7 @@ main (void)
      * stops 45-46), 2.56 x when only neighbours in dark stones counted,
      * 1.83 x before the pieces of up to 4 voxels were removed (specks.c,
      * solid history, stop 47). */
-    { "cells", 0.90, 1.15, 1.08, 1.7, true, 0.80, 1.0, 0.90, 0.82 },
+    { "cells", 0.90, 1.15, 1.08, 1.7, TS_CELL_STRUCTURE_ON, 0.80, 1.0, 0.90, 0.82 },
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
     test_kind (&cases[i]);

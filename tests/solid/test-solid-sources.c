@@ -289,7 +289,7 @@ test_bad_arguments (void)
     {
       bool keeps = c == 0; /* histogram matching without the cell structure */
       p.histogram_matching = c != 1;
-      p.cell_structure = c == 2;
+      p.cell_structure = c == 2 ? TS_CELL_STRUCTURE_ON : TS_CELL_STRUCTURE_OFF;
       p.record_sources = false;
       CHECK (ts_solid_estimate_memory (&p, all, &without, &e) == TS_OK, "estimate: %s", e.message);
       p.record_sources = true;
@@ -299,7 +299,7 @@ test_bad_arguments (void)
              without, with);
     }
   p.histogram_matching = true;
-  p.cell_structure = false;
+  p.cell_structure = TS_CELL_STRUCTURE_OFF;
 
   /* A map too small, or missing for an orientation that voxels copy. */
   for (size_t v = 0; v < cube (n); v++)

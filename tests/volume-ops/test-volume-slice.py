@@ -58,13 +58,25 @@ check(px2 != px1 and len(px2) == len(px1), "seed 2: another slice (%d of %d byte
 
 note("-- the cell structure: another volume, opaque and reproducible")
 sc, scb = os.path.join(tmp, "sc.png"), os.path.join(tmp, "scb.png")
-code, warnings, _ = slice_cli(sc, cell_structure="true", **base)
-slice_cli(scb, cell_structure="true", **base)
+code, warnings, _ = slice_cli(sc, cell_structure="on", **base)
+slice_cli(scb, cell_structure="on", **base)
 w, h, pxc = pixels(sc) if code == 0 and os.path.isfile(sc) else (0, 0, b"")
 check(code == 0 and not warnings and (w, h) == (16, 16) and min(pxc[3::4], default=0) == 255,
-      "cell-structure=true: exit %d, %dx%d, %s, opaque" % (code, w, h, warnings or "no warning"))
-check(pxc != px1 and pxc == pixels(scb)[2], "cell-structure=true: another slice than without, "
+      "cell-structure=on: exit %d, %dx%d, %s, opaque" % (code, w, h, warnings or "no warning"))
+check(pxc != px1 and pxc == pixels(scb)[2], "cell-structure=on: another slice than without, "
       "the same twice")
+# The default is automatic: off for bark, on for stones in mortar.
+soff = os.path.join(tmp, "soff.png")
+slice_cli(soff, cell_structure="off", **base)
+check(pixels(soff)[2] == px1, "bark: the default (automatic) slice is the one with cell-structure=off")
+stones = tsops.exemplar("stone33.png")
+sauto, son = os.path.join(tmp, "sauto.png"), os.path.join(tmp, "son.png")
+code, warnings, _ = slice_cli(sauto, stones, cell_structure="auto", **base)
+slice_cli(son, stones, cell_structure="on", **base)
+pxauto = pixels(sauto)[2] if code == 0 and os.path.isfile(sauto) else b""
+check(code == 0 and not warnings and len(pxauto) == 16 * 16 * 4 and pxauto == pixels(son)[2],
+      "stone33: cell-structure=auto gives the slice of cell-structure=on (exit %d, %s)"
+      % (code, warnings or "no warning"))
 
 note("-- an XML graph gives the same slice as the command line")
 xml = os.path.join(tmp, "slice.xml")
@@ -107,7 +119,7 @@ bad_case("transparent exemplar", "fully transparent", (16, 16), "",
          ["gegl:color", "value=transparent"] + crop(32, 32), size=16)
 bad_case("2x2 exemplar", "2x2", (16, 16), None, crop(2, 2), size=16)
 bad_case("translucent exemplar with the cell structure", "needs opaque exemplars", (16, 16),
-         None, ["gegl:opacity", "value=0.5"], size=16, cell_structure="true")
+         None, ["gegl:opacity", "value=0.5"], size=16, cell_structure="on")
 bad_case("memory limit 1 MiB", "limit of 1.0 MiB", (32, 32), size=32, memory_limit=1)
 # GObject refuses an out-of-range size with its own message and keeps the
 # default (128); the memory limit then refuses that without synthesising.
