@@ -202,7 +202,8 @@ static const struct
        "or cracked mud: a 3D tessellation fitted to the layer decides where the walls "
        "between cells go, so every slice shows whole cells with closed joints. "
        "Automatic (2): on for an opaque layer of separate light stones in thin dark "
-       "joints, off otherwise. On (1): always; needs an opaque layer, and is wrong for "
+       "joints that run every way (not rows of tiles or bricks), off otherwise. On (1): "
+       "always; needs an opaque layer, and is wrong for "
        "other textures (round pebbles turn into polygons). Off (0): never") },
 };
 

@@ -57,7 +57,8 @@ property_boolean (histogram_matching, _("Histogram matching"),
                    "decides where the walls between cells go, so every slice "      \
                    "shows whole cells with closed joints. Automatic turns it on "   \
                    "for opaque exemplars of separate light stones in thin dark "    \
-                   "joints; On needs an opaque exemplar"))
+                   "joints that run every way, not in rows as tiles and bricks; "   \
+                   "On needs an opaque exemplar"))
 #endif
 TS_VOLUME_CELL_STRUCTURE_PROPERTY (TS_VOLUME_OP_CELLS, TS_VOLUME_OP_CELLS_NAME)
 

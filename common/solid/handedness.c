@@ -33,19 +33,9 @@ ts_solid_diagonal_bias (const TsImage *ex)
   for (size_t y = 1; y + 1 < h; y++)
     for (size_t x = 1; x + 1 < w; x++)
       {
-        float l[3][3];
-        bool opaque = true;
-        for (size_t j = 0; j < 3; j++)
-          for (size_t i = 0; i < 3; i++)
-            {
-              const float *p = ex->pixels + ((y + j - 1) * w + x + i - 1) * TS_CHANNELS;
-              l[j][i] = p[0];
-              opaque = opaque && p[3] > 0.0f;
-            }
-        if (!opaque)
+        double gx, gy;
+        if (!ts_solid_sobel (ex, x, y, &gx, &gy))
           continue;
-        double gx = (l[0][2] + 2.0 * l[1][2] + l[2][2]) - (l[0][0] + 2.0 * l[1][0] + l[2][0]);
-        double gy = (l[2][0] + 2.0 * l[2][1] + l[2][2]) - (l[0][0] + 2.0 * l[0][1] + l[0][2]);
         total += gx * gx + gy * gy;
         diagonal += 2.0 * gx * gy;
       }

@@ -93,6 +93,26 @@ TsStatus ts_solid_mask_pieces (const uint8_t *mask, size_t w, size_t h, TsSolidP
 #define TS_SOLID_STONE_SHARE 0.4
 
 
+/* The Sobel gradient of the lightness at interior pixel (x, y), in
+ * *gx, *gy; false where the 3 x 3 block holds a transparent pixel. */
+static inline bool
+ts_solid_sobel (const TsImage *ex, size_t x, size_t y, double *gx, double *gy)
+{
+  float l[3][3];
+  bool opaque = true;
+
+  for (size_t j = 0; j < 3; j++)
+    for (size_t i = 0; i < 3; i++)
+      {
+        const float *p = ex->pixels + ((y + j - 1) * ex->width + x + i - 1) * TS_CHANNELS;
+        l[j][i] = p[0];
+        opaque = opaque && p[3] > 0.0f;
+      }
+  *gx = (l[0][2] + 2.0 * l[1][2] + l[2][2]) - (l[0][0] + 2.0 * l[1][0] + l[2][0]);
+  *gy = (l[2][0] + 2.0 * l[2][1] + l[2][2]) - (l[0][0] + 2.0 * l[0][1] + l[0][2]);
+  return opaque;
+}
+
 /* Which way round one orientation reads its exemplar (handedness.c).
  * With one image on all three orientations and its edges' energy-
  * weighted sin 2t below -TS_SOLID_MIRROR_BIAS (lines falling more than
@@ -113,9 +133,11 @@ void ts_solid_resolve_params (const TsSolidParams *params, const TsImage *const 
                               TsSolidParams *resolved);
 /* Whether one exemplar is cells for the automatic choice: opaque, its
  * light phase in stones, their joints thin (`*thin_share`: the share of
- * the joints' middle line within 1.5 pixels of a stone, 0 if not looked
- * at). */
-TsStatus ts_solid_cells_in_joints (const TsImage *ex, bool *cells, double *thin_share);
+ * the joints' middle line within 1.5 pixels of a stone) and its edges
+ * not along the axes (`*axis_share`: the share of its gradient energy
+ * within 10 degrees of them); both 0 if not looked at. */
+TsStatus ts_solid_cells_in_joints (const TsImage *ex, bool *cells, double *thin_share,
+                                   double *axis_share);
 
 /* Whether the finest level weighs votes by the position histogram
  * (position-histogram.c): with histogram matching, and not with the cell

@@ -3,7 +3,8 @@
  * (ground1's cracked mud, stone33's stones in mortar); off for every
  * other bundled exemplar, for the blobs and grains truths, for round
  * pebbles in wide dark gaps (which pass the stones gate, so only the
- * thin-joints test keeps them off) and for a translucent exemplar. An
+ * thin-joints test keeps them off), for tiles and bricks in rows (thin
+ * grout, but along the axes) and for a translucent exemplar. An
  * automatic run is the same volume as the explicit choice it makes, and
  * a value out of range is refused. */
 #include "test-util.h"
@@ -48,15 +49,16 @@ test_truths (void)
       float *truth = slice_truth_lab (cases[i].kind, n, cases[i].seed);
       TsImage ex = { n, n, truth }; /* the truth's slice z = 0 */
       bool cells = false;
-      double thin = 0.0;
+      double thin = 0.0, axis = 0.0;
       if (!truth)
         {
           CHECK (0, "%s: out of memory or unknown solid", cases[i].kind);
           continue;
         }
-      CHECK (ts_solid_cells_in_joints (&ex, &cells, &thin) == TS_OK, "%s: looked at", cases[i].kind);
-      printf ("%-6s %zu^2 seed %u: thin joints %.3f, cells %d\n", cases[i].kind, n, cases[i].seed,
-              thin, cells);
+      CHECK (ts_solid_cells_in_joints (&ex, &cells, &thin, &axis) == TS_OK, "%s: looked at",
+             cases[i].kind);
+      printf ("%-6s %zu^2 seed %u: thin joints %.3f, axis edges %.3f, cells %d\n", cases[i].kind, n,
+              cases[i].seed, thin, axis, cells);
       CHECK (automatic (&ex) == cases[i].cells, "%s %zu^2 seed %u: the automatic choice is %s",
              cases[i].kind, n, cases[i].seed, cases[i].cells ? "on" : "off");
       free (truth);
@@ -83,10 +85,12 @@ test_photographs (void)
     {
       TsImage ex;
       bool cells = false;
-      double thin = 0.0;
+      double thin = 0.0, axis = 0.0;
       test_load_exemplar (cases[i].name, &ex);
-      CHECK (ts_solid_cells_in_joints (&ex, &cells, &thin) == TS_OK, "%s: looked at", cases[i].name);
-      printf ("%-13s thin joints %.3f, cells %d\n", cases[i].name, thin, cells);
+      CHECK (ts_solid_cells_in_joints (&ex, &cells, &thin, &axis) == TS_OK, "%s: looked at",
+             cases[i].name);
+      printf ("%-13s thin joints %.3f, axis edges %.3f, cells %d\n", cases[i].name, thin, axis,
+              cells);
       CHECK (automatic (&ex) == cases[i].cells, "%s: the automatic choice is %s", cases[i].name,
              cases[i].cells ? "on" : "off");
       free (ex.pixels);
@@ -137,18 +141,65 @@ test_pebbles (void)
   TsImage ex;
   float phase, joint;
   bool stones = false, cells = true;
-  double thin = 1.0;
+  double thin = 1.0, axis = 0.0;
 
   pebbles (&ex, 126);
   ts_solid_splits (&ex, &phase, &joint);
   CHECK (ts_solid_phase_in_pieces (&ex, phase) == TS_SOLID_LIGHT_PIECES
            && ts_solid_exemplar_stones (&ex, phase, &stones) == TS_OK && stones,
          "the pebbles pass the stones gate");
-  CHECK (ts_solid_cells_in_joints (&ex, &cells, &thin) == TS_OK, "pebbles: looked at");
+  CHECK (ts_solid_cells_in_joints (&ex, &cells, &thin, &axis) == TS_OK, "pebbles: looked at");
   printf ("pebbles       thin joints %.3f, cells %d\n", thin, cells);
   CHECK (thin < 0.5 && !cells && !automatic (&ex),
          "round pebbles in wide gaps keep the cell structure off (thin joints %.3f)", thin);
   free (ex.pixels);
+}
+
+/* Light tiles of tile_w x tile_h pixels in 2-pixel dark grout, each row
+ * shifted by `bond` pixels against the one above (0: a square grid). */
+static void
+tiles (TsImage *img, size_t side, size_t tile_w, size_t tile_h, size_t bond)
+{
+  CHECK (ts_image_alloc (img, side, side) == TS_OK, "alloc");
+  for (size_t y = 0; y < side; y++)
+    for (size_t x = 0; x < side; x++)
+      {
+        size_t row = y / tile_h, u = (x + row * bond) % side, column = u / tile_w;
+        bool grout = y % tile_h < 2 || u % tile_w < 2;
+        float *p = img->pixels + (y * side + x) * TS_CHANNELS;
+        p[0] = grout ? 20.0f : 55.0f + (float) ((row * 7 + column * 13) % 11) * 3.0f
+                                 + (float) ((x + y) % 3);
+        p[1] = p[2] = 0.0f;
+        p[3] = 1.0f;
+      }
+}
+
+/* Tiles and bricks in rows have thin grout between separate stones, but
+ * the cell structure would turn their grid into polygons. */
+static void
+test_rows (void)
+{
+  static const struct
+  {
+    const char *name;
+    size_t      tile_w, tile_h, bond;
+  } cases[] = { { "square tiles", 16, 16, 0 }, { "running bond", 24, 12, 12 } };
+
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
+    {
+      TsImage ex;
+      bool cells = true;
+      double thin = 0.0, axis = 0.0;
+      tiles (&ex, 96, cases[i].tile_w, cases[i].tile_h, cases[i].bond);
+      CHECK (ts_solid_cells_in_joints (&ex, &cells, &thin, &axis) == TS_OK, "%s: looked at",
+             cases[i].name);
+      printf ("%-13s thin joints %.3f, axis edges %.3f, cells %d\n", cases[i].name, thin, axis,
+              cells);
+      CHECK (thin >= 0.75 && axis > 0.8 && !cells && !automatic (&ex),
+             "%s: thin grout along the axes keeps the cell structure off (thin joints %.3f, "
+             "axis edges %.3f)", cases[i].name, thin, axis);
+      free (ex.pixels);
+    }
 }
 
 /* A translucent pixel turns the automatic choice off, and the run goes
@@ -246,6 +297,7 @@ main (void)
   test_truths ();
   test_photographs ();
   test_pebbles ();
+  test_rows ();
   test_translucent ();
   test_same_volume ("cells", TS_CELL_STRUCTURE_ON);
   test_same_volume ("blobs", TS_CELL_STRUCTURE_OFF);
