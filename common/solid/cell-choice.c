@@ -137,15 +137,15 @@ axis_edge_share (const TsImage *ex)
   return total > 0.0 ? axis / total : 0.0;
 }
 
-static bool
-opaque (const TsImage *ex)
+bool
+ts_solid_fully_opaque (const TsImage *ex)
 {
   size_t count = ts_image_pixel_count (ex);
 
   for (size_t i = 0; i < count; i++)
-    if (!(ex->pixels[i * TS_CHANNELS + 3] >= 1.0f))
+    if (ex->pixels[i * TS_CHANNELS + 3] < 1.0f)
       return false;
-  return count > 0;
+  return true;
 }
 
 TsStatus
@@ -157,7 +157,7 @@ ts_solid_cells_in_joints (const TsImage *ex, bool *cells, double *thin_share, do
 
   *cells = false;
   *thin_share = *axis_share = 0.0;
-  if (!ex || !ex->pixels || ex->width == 0 || ex->height == 0 || !opaque (ex))
+  if (!ex || !ex->pixels || ex->width == 0 || ex->height == 0 || !ts_solid_fully_opaque (ex))
     return TS_OK;
   ts_solid_splits (ex, &phase, &joint);
   if (ts_solid_phase_in_pieces (ex, phase) == TS_SOLID_LIGHT_PIECES)

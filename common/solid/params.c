@@ -57,11 +57,10 @@ check_exemplar (const TsImage *ex, int axis, bool cell_structure, TsError *error
                     "the exemplar of the slices across %s is fully transparent: "
                     "there is nothing to copy from", axis_names[axis]);
   /* The cell structure carries its distances in the working alpha. */
-  for (size_t i = 0; i < n && cell_structure; i++)
-    if (ex->pixels[i * TS_CHANNELS + 3] < 1.0f)
-      return ts_fail (error, TS_ERROR_BAD_PARAMETER,
-                      "the cell structure needs opaque exemplars; the exemplar of the slices "
-                      "across %s has transparent pixels", axis_names[axis]);
+  if (cell_structure && !ts_solid_fully_opaque (ex))
+    return ts_fail (error, TS_ERROR_BAD_PARAMETER,
+                    "the cell structure needs opaque exemplars; the exemplar of the slices "
+                    "across %s has transparent pixels", axis_names[axis]);
   return TS_OK;
 }
 

@@ -127,6 +127,9 @@ void   ts_solid_mirror_image (TsImage *image);
 /* Sources of `axis` back to the unmirrored exemplar's pixels. */
 void   ts_solid_unmirror_sources (TsSolidSource *sources, size_t voxels, int axis, size_t width);
 
+/* Whether no pixel's alpha lies below 1, as the cell structure needs
+ * (cell-choice.c; params.c refuses an explicit choice without it). */
+bool ts_solid_fully_opaque (const TsImage *ex);
 /* `params` with the cell structure's automatic choice made
  * (cell-choice.c): on or off. The engine's steps see only these. */
 void ts_solid_resolve_params (const TsSolidParams *params, const TsImage *const exemplars[3],
