@@ -2,21 +2,12 @@
  * on for opaque exemplars whose light phase lies in separate stones
  * (phase-guide.c's gate of the default path) parted by thin dark joints
  * that run in every direction, not along the axes.
- * Why both: the stones gate alone also takes round pebbles in wide dark
- * gaps, lit reliefs and weaves, which the tessellation turns into
- * polygons; thin joints alone also take wood grain and burlap, whose
- * light phase is one piece. On the bundled exemplars the share of the
- * joints' middle line that lies within TS_THIN_JOINT_DISTANCE of a stone
- * is 0.92-0.96 for the cells truth (64^2 and 128^2), ground1 (cracked
- * mud) and stone33 (stones in mortar), and at most 0.43 for the other
- * exemplars the gate takes (bluemetal 0.43, synthetic pebble layers 0.26
- * and 0.17, canyons2 0.15, 3dweave 0.11). Tiles and bricks in rows, whose
- * grout is thin too, keep their grid without it and turn into polygons
- * with it: their edges lie along the axes (a synthetic tile grid and a
- * running bond read 0.91 and 0.92 of their gradient energy within 10
- * degrees of the axes, brick.png 0.50, rock's coursed wall 0.52, against
- * 0.25-0.31 for the three exemplars of cells and 0.22 for edges in every
- * direction); solid history, stop 70.
+ * Why all three: the stones gate alone also takes round pebbles in wide
+ * dark gaps, lit reliefs and weaves, which the tessellation turns into
+ * polygons; thin joints alone also take wood grain and woven cloth,
+ * whose light phase is one piece. Tiles and bricks in rows have thin
+ * grout too, but keep their grid only without the structure: their
+ * edges lie along the axes, which cells' walls do not.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/distance.h"
@@ -25,15 +16,23 @@
 #include <stdlib.h>
 
 /* A joint pixel this close to a stone (pixels, Euclidean) is within a
- * joint at most about three pixels wide. */
+ * joint at most about three pixels wide: a crack or a mortar line, not
+ * the wide gap around a pebble. Wider joints keep the structure off
+ * (docs/design.md, Known limits). */
 #define TS_THIN_JOINT_DISTANCE 1.5f
-/* The share of the joints' middle line that must be that thin. */
+/* The share of the joints' middle line that must be that thin: most of
+ * it, leaving room for the wider spots where joints meet. Cells read
+ * over 0.9, other stones-in-ground kinds under 0.45. */
 #define TS_THIN_JOINT_SHARE 0.75
 /* Dark pieces smaller than this (4-connected pixels) are specks in the
  * stones, not joints. */
 #define TS_JOINT_MIN_PIXELS 8
 /* Cells lay out their walls in every direction: at most this share of
- * the gradient energy may lie within TS_AXIS_DEGREES of the axes. */
+ * the gradient energy may lie within TS_AXIS_DEGREES of the axes. Edges
+ * in every direction put 0.22 there, grids in rows over 0.9; the bound
+ * between is fitted to the bundled exemplars (photographed cells up to
+ * 0.31, bricks and coursed walls 0.50); see docs/design.md, Known
+ * limits. */
 #define TS_CELLS_MAX_AXIS_SHARE 0.40
 #define TS_AXIS_DEGREES 10.0
 /* tan (TS_AXIS_DEGREES): a gradient within it of an axis has its smaller

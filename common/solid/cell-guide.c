@@ -35,9 +35,10 @@
 /* The least in-slice share of a wall's normal the finest level divides
  * a distance by (cell_guide_apply): a slice that cuts a wall at a
  * glancing angle then sees it as far off as the exemplar, a slice
- * itself, would. 128^3 seeds 1-5 with it: specks 0.99-1.40 x the
- * truth's (from 1.13-1.61), coherence within +0.006 of without. At 0.3:
- * specks as low, coherence up to +0.013 (seed 5: 1.149 x the truth's). */
+ * itself, would. Half: a distance is stretched at most twice however
+ * glancing the cut, which removed specks at no cost in coherence; a
+ * lower bound stretched further and began to cost coherence. Chosen on
+ * the cells truth. */
 #define GUIDE_MIN_SLANT 0.5f
 /* Bins of the histogram that places the walls' thickness. */
 #define GUIDE_BINS 4096
@@ -175,9 +176,9 @@ stone_mask (const TsImage *ex, float joint, float split, uint8_t *stone)
 /* The guide's phases: joints below the joint split, stones above it. The
  * cell count comes from the stones above the (higher) phase split, plus
  * the dark stones: sections of the rimless stone mask darker than the
- * phase split. Counting the stones above the joint split alone gave 75
- * sections' worth of cells for the exemplar's 109, and sharpness
- * 0.85-0.87 x the truth's (128^3 cells, solid history, stop 43). */
+ * phase split. Counting the pieces above the joint split alone merges
+ * stones whose dark rims touch: too few cells for the exemplar's
+ * sections, and blunter slices. */
 static TsStatus
 guide_phases (const TsImage *working, uint8_t *light, uint8_t *stone, size_t *sections, size_t *dark,
               float *tone)

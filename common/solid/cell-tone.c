@@ -1,19 +1,19 @@
-/* Cell tones: each of the truth's stones has one tone, but a cell whose
- * voxels copy several exemplar stones shows two or three, split by seams
- * no wall explains (128^3 cells: lightness spread within slice sections
- * 1.03-1.10 x the exemplar's, the truth's 0.95-1.04). The E-step weighs
+/* Cell tones: a real stone has one tone, but a cell whose voxels copy
+ * several exemplar stones shows two or three, split by seams no wall
+ * explains, and its sections spread wider in lightness than the
+ * exemplar's. The E-step weighs
  * down a vote whose stone's tone differs from its cell's (estep.c);
  * cells then settle on one tone.
  *
  * A cell's tone is its light voxels' mean lightness as the M-step left
  * it (above the joint split: a dark stone's cell has no voxel above the
- * phase split, and went untoned, solid history, stop 44), matched by rank to
+ * phase split, and would go untoned), matched by rank to
  * the exemplar's stone tones: the cell of the q-th quantile (by light
  * voxels) takes the tone of the q-th quantile of
  * the exemplar's stone pixels. The mean alone regresses to the middle,
- * since a cell's voxels first copy stones of many tones: the spread of
- * the stones' tones was 0.82 x the truth's on 128^3 seeds 1-5 (now
- * 0.92, solid history, stop 42). The stones' tones come with their sections
+ * since a cell's voxels first copy stones of many tones, and the
+ * stones' tones would spread less than the exemplar's; ranking keeps
+ * their spread. The stones' tones come with their sections
  * (cell-guide.c).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"

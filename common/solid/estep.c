@@ -5,8 +5,8 @@
  *
  * No blending and no mode: a mean of the votes, or the vote nearest
  * their mode, is an in-between pixel wherever the orientations disagree,
- * and the volume lost the exemplar's fine grain and edges (128^3
- * sharpness 0.61-0.84 x the truth's). Taking the single best vote keeps
+ * and the volume loses the exemplar's fine grain and edges. Taking the
+ * single best vote keeps
  * whole exemplar neighbourhoods together: neighbouring voxels covered by
  * the same well-matched neighbourhood copy its pixels.
  *
@@ -32,33 +32,27 @@
  * winning vote whose lightness phase (dark or light of the exemplar's
  * phase split, phase-split.c) is that of none of the voxel's six face
  * neighbours yields to the heaviest vote of the other phase. Such a voxel
- * is a sliver where two copies meet, a speck the truth solids do not
- * have: it cost 128^3 cells 6.4 x the truth's specks per slice pixel
- * (benchmarks/phase-thickness.h; now 4.3 x), and sharpness counted it as
- * edge. A voxel of a one-voxel sheet or thread keeps same-phase
+ * is a sliver where two copies meet, a speck that solid textures do not
+ * have, and sharpness counts it as edge. A voxel of a one-voxel sheet
+ * or thread keeps same-phase
  * neighbours and stays. At least TS_SOLID_LONE_KNOWN neighbours outside
  * the current batch must say so. With the cell structure the joint split
  * (phase-split.c) makes a third class, the joints below it: a vote is
  * then lone if its side of either split is none of its neighbours', and
  * yields to the heaviest vote of a class that is not. Why: the guide's
  * joints end at the joint split, and with the rule at that split alone,
- * lone voxels of the dark stones between the splits stayed (128^3
- * cells, seeds 1-2: specks 2.7-4.2 x the truth's; with three classes
- * 1.6-2.3 x, solid history, stop 44). Most specks left were light
- * voxels in dark stones held by one light face neighbour, so a light
- * voxel with five face neighbours below the phase split also counts as
- * lone (1.7 and 2.7 x -> 1.0 and 1.6 x; counting only neighbours in
- * dark stones, 1.5 and 2.2 x, solid history, stops 45-46; needing four
- * of those merged light sections, 0.86 -> 0.81 of the exemplar's).
+ * lone voxels of the dark stones between the splits stay. A light voxel
+ * in a dark stone is often held by its one light face neighbour, so a
+ * light voxel with five face neighbours below the phase split also
+ * counts as lone; five, not four: at four fewer light sections were
+ * left than the exemplar has.
  *
  * Pieces kept apart (the level's `kept_apart`, at the finest level for
  * stones in mortar): a vote that would join two stones through a joint
  * voxel yields to the heaviest vote for a joint (piece-topology.c).
- * 128^3 cells, seeds 1-6, with the stones parted at the joint split
- * (phase-plan.c): coherence 1.097 -> 1.078 x the truth's, specks 3.13
- * -> 2.81 x (solid history, stop 66); with the fallback a joint at that
- * split too, not only below the phase split, 1.072 x and 2.73 x (stop
- * 67).
+ * Stones and joints part at the joint split (phase-plan.c), and so does
+ * the fallback: a vote merely below the phase split may be a dark
+ * stone's pixel, which would join the stones just the same.
  *
  * Cell tones (the level's `cell_tone`, at the finest level with the
  * cell guide): a vote for an exemplar stone whose tone differs from the
@@ -73,12 +67,9 @@
  * copy on into the next slice shifted by a pixel: V(x, y, z) =
  * E(x, y + z) is a perfect copy in every y and every z slice, so the
  * two orientations' near-perfect matches outweigh the poor ones of the x
- * slices, where it is a band of 45-degree streaks (java 64^3, seeds
- * 1-3: the worst slice's edge anisotropy 0.29, 0.19, 0.29 against the
- * exemplar's 0.04; with the rule 0.13, 0.11, 0.20). Counting the
- * source's own pixel too (straight extrusion) raised the truth solids'
- * specks (cells 3.5 -> 4.1 x the truth's) by lowering every vote inside
- * flat stones.
+ * slices, where it is a band of 45-degree streaks. Counting the
+ * source's own pixel too (straight extrusion) would lower every vote
+ * inside flat stones, and raised the specks.
  *
  * Histogram matching: Kopf et al.'s weight 1 / (1 + excess) lowers the
  * votes of over-represented colours, so a near-tie goes to the colour the
@@ -89,7 +80,9 @@
 #include <math.h>
 #include <string.h>
 
-/* 128^3 cells' sharpness 0.89 -> 0.93 x the exemplar's with it. */
+/* Enough for a sharp start to hold against a flat neighbourhood that
+ * matches about as well, small enough that a clearly better match
+ * still wins (see the top of this file). Chosen on the truth solids. */
 #define TS_SOLID_INERTIA 1.5f
 /* Face neighbours outside the batch the lone-voxel rule needs: with all
  * six, 1 - (15/16)^6 = 32 % of the voxels would be exempt each batch. */
@@ -478,7 +471,9 @@ vote_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *g
   return v->source >= 0;
 }
 
-/* In-batch voxels whose data are fetched ahead of their vote. */
+/* In-batch voxels whose data are fetched ahead of their vote: enough
+ * votes' work to cover a trip to memory, few enough that the fetched
+ * lines are still cached when used. */
 #define TS_SOLID_PREFETCH_AHEAD 4
 
 size_t

@@ -11,11 +11,11 @@
  * sheets with normal (a, -a, c), across x (a, b, -b), across y (a, b, -a),
  * so a = b = c = 0. The orientations then fight over every vein, and the
  * volume keeps blotches with axis-aligned edges. Read mirrored across x,
- * falling lines are the sheets x - y - z = c. Granite1 (veins falling
- * about 30-45°), 128^3 seeds 1-5, axis-edges of the x, y and z slices
- * over its exemplar's: mean 1.178 -> 1.107. Mirrored across y instead
- * (seeds 1-3): 1.128 against 1.083. Any sheets cut three of the six
- * face-diagonal planes along an axis (solid history, stop 54).
+ * falling lines are the sheets x - y - z = c, and the slices keep
+ * clearly fewer axis-aligned edges. Mirroring across y would serve as
+ * well in principle; x read a little better on the one bundled veined
+ * exemplar, a choice fitted to it (docs/design.md, Known limits). Any
+ * sheets cut three of the six face-diagonal planes along an axis.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 

@@ -97,8 +97,8 @@ search_centre (TsSearch *s, const Plane *p, const TsPass *pass, size_t leaves,
  * the exemplar neighbourhood varies. Why: the E-step gives each voxel its
  * best-matched vote, and flat neighbourhoods (stone insides) always match
  * better than those across an edge; unscaled, they claimed the voxels of
- * every edge, each iteration at the finest level lowered 128^3 cells'
- * sharpness (0.83 -> 0.75) and the mortar thickened. */
+ * every edge, each iteration at the finest level blunted the volume
+ * further and the mortar thickened. */
 static float
 match_error (const TsSolidVarianceMap *map, int32_t centre, float ssd, float pixels)
 {

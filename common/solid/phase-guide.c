@@ -5,8 +5,8 @@
  * boundary between the two phases (phase-split.c), and the E-step
  * weighs down a vote whose source lies at another distance than the
  * voxel (estep.c). Why: the finest level's slice neighbourhoods alone
- * erode the start's joints, and neighbouring stones merge (128^3 cells:
- * 0.37 x the truth's light sections per slice; solid history, stop 63).
+ * erode the start's joints, and neighbouring stones merge (a slice
+ * then shows about a third of the sections a real solid's does).
  * The voxels' distances are taken once, from the start after its necks
  * got walls (neck-walls.c), and held for the whole level.
  * SPDX-License-Identifier: LGPL-3.0-or-later */

@@ -8,9 +8,8 @@
  *
  * Stones are parted at their exemplar's joint split (phase-split.c), not
  * its phase split, so that dark stones are stones too and only the joints
- * below it part them (128^3 cells, seeds 1 and 5: coherence 1.067 and
- * 1.148 x the truth's at the phase split, 1.040 and 1.109 at the joint
- * split; solid history, stop 66).
+ * below it part them; at the phase split dark stones counted as ground
+ * and the volume's coherence suffered.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 

@@ -10,10 +10,12 @@
 #define TS_PHASE_BINS_PER_L 10
 #define TS_PHASE_BINS (100 * TS_PHASE_BINS_PER_L + 1)
 /* Where the joint split lies between the 5th and the 95th percentile.
- * Midway, on 128^3 cells, it fell inside the stones' lightness (L* 36-77
- * there, the mortar's 15-35): the darkest stones and the dark rims of
- * the others counted as mortar, and the guide drew thick, grainy joints
- * and no dark stones (solid history, stop 43). */
+ * Joints are darker than the darkest stone, so they sit low in the
+ * range; midway falls inside the stones' own lightness, and the darkest
+ * stones and the others' dark rims count as mortar (thick, grainy
+ * joints, no dark stones). A quarter suits mortar that spans about the
+ * lowest third of the range, as the cells truth's does: fitted to the
+ * bundled exemplars; see docs/design.md, Known limits. */
 #define TS_JOINT_SHARE 0.25f
 
 /* The 5th and 95th lightness percentiles of the opaque pixels; false if

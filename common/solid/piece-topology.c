@@ -6,9 +6,9 @@
  * split (phase-plan.c), so dark stones are stones too. Why: the walls
  * cut at the start's necks (neck-walls.c) split the start into stones,
  * but the slice neighbourhoods draw new necks through the joints, and
- * after the level's first iteration one piece held 98.5 % of the light
- * voxels again (128^3 cells seed 5; the truth's largest holds 0.3 %;
- * solid history, stops 64 and 66).
+ * after the level's first iteration nearly all the light voxels were
+ * one piece again, where a real solid's largest stone holds a tiny
+ * share.
  *
  * The test is digital topology's local one: the 6-connected components
  * of piece voxels in the voxel's 18-neighbourhood that touch one of its

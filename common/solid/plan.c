@@ -6,52 +6,45 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 
-/* Default neighbourhood sides: large first, then small. */
+/* Default neighbourhood sides: large first, to lay out shapes a few
+ * features wide, then small, to draw their edges. */
 #define TS_SOLID_PATCH 9
 #define TS_SOLID_FINE_PATCH 5
 /* Least spacing, within a slice, of the large neighbourhoods at a
  * finest level of at least TS_SOLID_SPARSE_EDGE voxels (the 2D
  * schedule's patch / 4 gives 2). With 3 a voxel gets 13.5 votes instead
  * of 30 in that pass's E-step and the M-step searches 4/9 as many
- * centres: 128^3 took 22-27 s instead of 30-33, with the truth solids'
- * figures within their seed-to-seed spread (solid history, stop 52). At 64^3,
- * a run of a few seconds, it blunted the cells (sharpness 0.909 ->
- * 0.896 x the truth's, below test-solid-shapes' 0.90), so smaller
- * volumes keep 2. */
+ * centres: a large volume runs about a quarter faster, with quality
+ * within the seed-to-seed spread. Small volumes are fast anyway, and
+ * there the fewer votes blunted the cells, so they keep 2. */
 #define TS_SOLID_FINEST_SPACING 3
 #define TS_SOLID_SPARSE_EDGE 128
-/* Finest level's iterations per pass (2D: 2); the third brings 128^3
- * cells' completeness from 1.17x to 1.13x the truth's, the fourth
- * brings their coherence back under 1.15x the truth's with the position
- * histogram (1.16-1.17x with 3 iterations). */
+/* Finest level's iterations per pass (2D: 2): a volume converges more
+ * slowly than an image, its three orientations pulling apart; a third
+ * iteration improves completeness and a fourth coherence, the gains
+ * smaller with each. Chosen on the truth solids. */
 #define TS_SOLID_FINEST_ITERATIONS 4
 /* ...but 8 for its small-neighbourhood pass, the one that closes the
- * mortar around 128^3 cells' stones: with it the middle levels need only
- * 2 iterations per pass, and fewer middle iterations are what keeps
- * blobs' spots from merging (128^3, seeds 1-5: blobs' sharpness mean
- * 0.89 -> 0.92 x the truth's, cells' coherence 1.13 -> 1.12 x; 14 ->
- * 18 s). */
+ * mortar around the stones: with it the middle levels need only 2
+ * iterations per pass, and fewer middle iterations are what keeps spots
+ * from merging; the cost is about a quarter more time. */
 #define TS_SOLID_FINEST_SMALL_ITERATIONS 8
 /* ...and 12 for exemplars whose light phase lies in separate pieces
  * (stones in mortar, phase-guide.c): its walls at necks leave joints
- * that more small iterations close. 128^3 cells, seeds 1-6: coherence
- * 1.136 -> 1.097 x the truth's (seed 5 1.17 -> 1.14, the last aim
- * missed), sharpness 0.983 -> 0.968 x; 128^3 from the noise of the
- * solid-memory benchmark 19.6 -> 25.5 s. Not for spots (blobs, grains:
- * seed 2's sharpness 0.91 -> 0.90 x, their phases thicker). */
+ * that more small iterations close, for better coherence at a little
+ * sharpness and about 30 % more time. Not for spots, which only
+ * thicken with more iterations. */
 #define TS_SOLID_FINEST_JOINT_ITERATIONS 12
 /* Iterations per pass of the levels between the coarsest and the finest
- * (2D: 3). Each one merges more of 128^3 blobs' spots. While the finest
- * small pass ran 4, the cells needed 4 here to settle their stone layout
- * (3 took their coherence to 1.16 x the truth's); now the finest level
- * settles it, and only 1 here unsettles it again (mean 1.14 x). */
+ * (2D: 3). Each one merges more spots; the finest level's long small
+ * pass settles the cells' layout, and 2 here is the fewest that still
+ * hands it a settled one (with 1 the cells' layout came unsettled). */
 #define TS_SOLID_MIDDLE_ITERATIONS 2
 
 /* Index leaves visited per quality step: the default quality (2) visits
  * 6. The solid engine's search effort is this breadth, not the 2D
- * engine's k-coherence candidates (solid history, stop 57: MRPM's candidates
- * added to it cost 18 % more time at 128^3, met no missed aim and took
- * 128^3 cells' seed-4 sharpness below 0.9 x the truth's). */
+ * engine's k-coherence candidates: those added to it cost about a fifth
+ * more time, improved no figure and blunted the cells. */
 #define TS_SOLID_LEAVES_PER_QUALITY 3
 
 size_t
@@ -72,13 +65,10 @@ ts_solid_plan_level (const TsSolidParams *sp, size_t level, size_t levels, size_
   p.quality = sp->quality;
   p.max_iterations = sp->max_iterations;
   /* With the automatic neighbourhood sizes the middle levels run only
-   * the small ones (one pass): their large pass merged 128^3 blobs'
-   * spots into fewer, thicker bodies (seeds 1-4: blobs' sharpness mean
-   * 0.90 -> 0.94 x the truth's, cells' coherence 1.10 -> 1.11 x; aims
-   * missed 2 -> 1 of 50). At stop 23, with 4 middle iterations per
-   * pass, it unsettled the cells; the finest level has since taken
-   * their layout over (solid history, stop 53). A 64^3 volume from a 64^2
-   * exemplar, as in the tests, has no middle level. */
+   * the small ones (one pass): a large pass there merges spots into
+   * fewer, thicker bodies, and the coarsest and finest levels already
+   * lay the shapes out. A 64^3 volume from a 64^2 exemplar, as in the
+   * tests, has no middle level. */
   p.patch_size = sp->patch_size ? sp->patch_size : (middle ? TS_SOLID_FINE_PATCH : TS_SOLID_PATCH);
   p.fine_patch_size = p.patch_size < TS_SOLID_FINE_PATCH ? p.patch_size : TS_SOLID_FINE_PATCH;
   p.wrap_x = p.wrap_y = sp->periodic;

@@ -3,9 +3,9 @@
  * source pixel is already copied into the volume, so the finest level
  * spreads its copies over the whole exemplar instead of repeating the
  * pixels that match everywhere (stone insides, the blobs' background).
- * Why: 64^3 seeds 1-6 then miss 2 of issue 14's 90 checks instead of 4,
- * and 128^3 cells keep their sharpness (0.94-0.97 x the truth's instead
- * of 0.90-0.96) with their mortar network less eroded.
+ * Why: repeated copies of the best-matching pixels make a volume
+ * blander than its exemplar; spread out, the volume keeps its
+ * sharpness and the cells' mortar network erodes less.
  *
  * The counts are counted once per level and then kept up to date by the
  * E-step (ts_solid_position_move), as the colour histogram is: exact

@@ -1,7 +1,5 @@
 /* Solid synthesis internals: the state of one level of the volume, its
  * M-step and E-step, and Kopf et al.'s histogram matching (internal).
- * "Solid history, stop N" in this folder's comments is that stop's
- * section of docs/solid-history.md: what was measured, kept and dropped.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #ifndef TS_SOLID_H
 #define TS_SOLID_H
@@ -64,13 +62,11 @@ TsStatus ts_solid_mask_pieces (const uint8_t *mask, size_t w, size_t h, TsSolidP
 /* The phase guide (phase-guide.c) and the walls at necks (neck-walls.c),
  * at the finest level of the default path, when the exemplar's largest
  * 4-connected light piece holds at most TS_SOLID_PIECES_APART of its
- * light pixels, or else its largest dark piece of its dark pixels. The
- * bundled images, at most their central 128 x 128 (solid history, stops
- * 63 and 64), light: the cells truth's exemplar 0.04, java 0.03, burlap
- * 0.08, granite1 0.17, stone33 0.29, rock, bluemetal, land1 and bark
- * 0.33-0.35, cracked, canyons2 and ground1 0.38-0.42, 3dweave 0.46 (on);
- * then dark: leopard and the grains truth's 0.09, the blobs truth's
- * 0.17, brick 0.25, wood1 0.49 (on); parque1 0.501 and 0.62 (off). */
+ * light pixels, or else its largest dark piece of its dark pixels.
+ * Half: when one piece holds most of the phase, the phase is a connected
+ * ground, not pieces. The exact bound is fitted to the bundled
+ * exemplars, two of which read just either side of it; see
+ * docs/design.md, Known limits. */
 #define TS_SOLID_PIECES_APART 0.5
 /* A vote whose source's signed distance to the phase boundary differs
  * by z from the voxel's weighs 1 / (1 + (z / SIGMA)^2); distances are
@@ -80,12 +76,10 @@ TsStatus ts_solid_mask_pieces (const uint8_t *mask, size_t w, size_t h, TsSolidP
 /* Two basins of the phase in pieces stay apart where both peaks rise
  * this far (voxels of distance to the ground) above the voxel where they
  * meet (neck-walls.c): spots and grains TS_SOLID_NECK_HEIGHT, stones
- * TS_SOLID_STONE_NECK_HEIGHT. Stones at 1.5, 128^3 cells seeds 1-6: light
- * sections 0.72-0.76 x the exemplar's (the truth's 0.86-1.01), the start's
- * merged stones left whole; at 1.0, 0.84-0.89, sharpness 0.958 -> 0.997 x
- * the truth's, coherence 1.072 -> 1.101 x (worst 1.144, aim 1.15). Spots
- * stay at 1.5: the blobs' coherence rose 1.037 -> 1.074 x at 1.0 (seeds
- * 1-4; solid history, stop 68). */
+ * TS_SOLID_STONE_NECK_HEIGHT. Stones touch along flat faces, so the
+ * start merges them across low necks that only the lower height parts;
+ * spots keep the higher one, where lower walls cost coherence. Both were
+ * chosen on the truth solids (docs/design.md, Known limits). */
 #define TS_SOLID_NECK_HEIGHT 1.5f
 #define TS_SOLID_STONE_NECK_HEIGHT 1.0f
 /* See ts_solid_exemplar_stones. */
@@ -117,9 +111,10 @@ ts_solid_sobel (const TsImage *ex, size_t x, size_t y, double *gx, double *gy)
  * With one image on all three orientations and its edges' energy-
  * weighted sin 2t below -TS_SOLID_MIRROR_BIAS (lines falling more than
  * rising), the slices across TS_SOLID_MIRRORED_AXIS read it mirrored
- * left to right. Granite1 scores -0.32; isotropic exemplars drawn from
- * the truth solids reach -0.18 at 64^2 (blobs, seeds 1-8) and -0.08 at
- * 128^2; the other photos bundled or shared -0.07 (stone33) or more. */
+ * left to right. Isotropic exemplars reach about -0.2 by chance at
+ * 64^2 and less at larger sizes; the bound sits above that, so only a
+ * clear slant flips; among the bundled images only granite1 (-0.32)
+ * passes it (docs/design.md, Known limits). */
 #define TS_SOLID_MIRRORED_AXIS 0
 #define TS_SOLID_MIRROR_BIAS 0.25
 double ts_solid_diagonal_bias (const TsImage *ex);
@@ -152,12 +147,13 @@ bool ts_solid_uses_positions (const TsSolidParams *params);
  * positive inside a cell) rides in the working alpha channel as
  * TS_ALPHA_SCALE + code (d): slope NEAR within KNEE pixels of a wall,
  * FAR beyond, because where the walls lie matters more than how deep in
- * its cell a pixel is. The coarser levels lay the cells out: 8 within
- * 3 px (at 8 everywhere, coherence was 1.10-1.17 x the truth's). The
- * finest level draws the joints: 12 within 1 px, 1 beyond. Against the
- * one slope 3 there, 128^3 seeds 1-2: coherence 1.05 and 1.09 x the
- * truth's (from 1.10 and 1.15), specks 1.1 and 1.6 x (from 4.0 and
- * 2.9), light sections 0.93 and 0.91 (from 0.80 and 0.88). */
+ * its cell a pixel is. The coarser levels lay the cells out: steep
+ * within a few pixels of a wall, gentle beyond, so a cell's depth still
+ * counts a little. The finest level draws the joints: very steep within
+ * one pixel, so a joint pixel only matches a joint pixel, and nearly
+ * flat beyond, so the stones' insides match freely (fewer specks and
+ * merged stones than with one slope). The values were chosen on the
+ * truth solids (docs/design.md, Known limits). */
 #define TS_SOLID_CELL_GUIDE_COARSE_NEAR 8.0f
 #define TS_SOLID_CELL_GUIDE_COARSE_FAR  2.0f
 #define TS_SOLID_CELL_GUIDE_COARSE_KNEE 3.0f
@@ -215,10 +211,11 @@ void     ts_solid_cell_guide_free (TsSolidCellGuide *guide);
 
 /* Cell tones (cell-tone.c), at the finest level with the cell guide: a
  * vote for a stone whose mean lightness lies z spreads (L* units) from
- * its cell's weighs 1 / (1 + weight z^2) (estep.c). 128^3 cells, seeds
- * 1-5: specks 1.24 -> 1.17 x the truth's, coherence 1.092 -> 1.080 x.
- * With spread 3, seed 5's coherence was 1.15, 1.16 and 1.17 x the
- * truth's at weights 0.5, 1 and 4 (aim 1.15; 1.14 here). */
+ * its cell's weighs 1 / (1 + weight z^2) (estep.c). A stone one spread
+ * off (6 L*, a plainly visible step in tone) keeps half its vote, so
+ * tone decides between stones that match about as well but does not
+ * override shape; a narrower spread or a larger weight cost coherence.
+ * Chosen on the cells truth (docs/design.md, Known limits). */
 #define TS_SOLID_TONE_WEIGHT 1.0f
 #define TS_SOLID_TONE_SPREAD 6.0f
 
@@ -301,16 +298,16 @@ ts_solid_view_owner (const TsSolidLevel *level, int axis)
   return axis;
 }
 
-/* The E-step's shear rule (estep.c), without the cell structure: java
- * 64^3 streaks with 1, 4 and 16: 0.17, 0.12, 0.10 (seed 1). With the
- * cell structure the guide shapes the stones, whose plane faces cross
- * the slices as sheared copies of their joint lines: the rule raised
- * 64^3 cells' axis-edges from 1.04 to 1.10. */
+/* The E-step's shear rule (estep.c): a vote weighs 1 + this times less
+ * per neighbour across its slice that continues its copy shifted by a
+ * pixel, the mark of a diagonal streak. Streaks fall most between 1 and
+ * 4 and little beyond. Off with the cell structure: the guide shapes
+ * the stones, whose plane faces cross the slices as sheared copies of
+ * their joint lines, and the rule turned their edges towards the axes. */
 #define TS_SOLID_SHEAR 4.0f
-/* ...at the finest levels only, this many. At the coarser ones it cost
- * 128^3 seed 2's sharpness (cells 0.916 -> 0.901 x the truth's, blobs
- * 0.844 -> 0.818) and changed no 64^3 figure; at the finest level alone
- * leopard's 64^3 streaks rose from 0.26 to 0.30 (solid history, stop 51). */
+/* ...at the finest levels only, this many: at the coarser ones it cost
+ * sharpness and removed no streaks, and at the finest alone streaks
+ * came back. */
 #define TS_SOLID_SHEAR_LEVELS 2
 
 /* A matched slice neighbourhood: exemplar centre (-1 = none) and robust
@@ -514,13 +511,10 @@ TsSolidPieces ts_solid_phase_in_pieces (const TsImage *ex, float split);
  * opaque light pixels lie TS_SOLID_STONE_DEPTH pixels or more from the
  * dark phase. The E-step keeps only stones apart (piece-topology.c):
  * thin veins and small grains, whose pieces in a slice may join in the
- * volume, came out blunter with the rule (128^3 seed 1, sharpness over
- * the exemplar's:
- * granite1 0.752 -> 0.718, java 0.898 -> 0.864). The share at the
- * central 128 x 128 of the bundled images: the cells truth's exemplars
- * 0.53-0.59 (their 64^2 crops 0.48-0.55), ground1 0.61, stone33 0.53,
- * bluemetal 0.52, canyons2 0.80, 3dweave 0.88 (stones); rock 0.36,
- * cracked 0.18, java 0.12, bark 0.12, granite1 0.11, burlap 0.07. */
+ * volume, came out blunter with the rule. Stones are wider than twice
+ * the depth, so much of them lies deep; veins and grains are thin, so
+ * little does. The share's bound is fitted to the bundled exemplars and
+ * has a small margin; see docs/design.md, Known limits. */
 TsStatus ts_solid_exemplar_stones (const TsImage *ex, float split, bool *stones);
 /* Every pixel's clipped signed distance (light positive) to the phase
  * boundary at `split`, in a new array. */

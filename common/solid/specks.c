@@ -3,9 +3,9 @@
  * side of the phase split (phase-split.c) takes the values of a face
  * neighbour on the other side. Why: the E-step's lone-voxel rule
  * (estep.c) sees one voxel's face neighbours only, so pieces of two to
- * four voxels stayed. In 128^3 cells' slices (seed 4) most specks lay
- * in stones whose tone is near the split, where copies of lighter and
- * darker exemplar stones meet; the truth shades such stones smoothly.
+ * four voxels stayed. Most lie in stones whose tone is near the split,
+ * where copies of lighter and darker exemplar stones meet; a real solid
+ * shades such stones smoothly.
  * Each replaced voxel copies its neighbour's exemplar pixel and source,
  * so aligned maps stay aligned.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
@@ -13,13 +13,10 @@
 
 #include <stdlib.h>
 
-/* The benchmark's specks are slice pieces of at most 4 pixels
- * (benchmarks/phase-thickness.h). 128^3 cells with the cell structure,
- * seeds 1 and 2: specks 0.96 and 1.58 x the truth's without this pass;
- * 0.82 and 1.21 x with pieces up to 4 voxels; 0.81 and 1.19 x up to 16:
- * the slices' specks left are cuts through larger pieces. Default path,
- * seeds 1-5: cells 4.26 -> 3.36 x, blobs 1.68 -> 1.42 x (solid
- * history, stop 48). */
+/* A speck is what a slice shows as a piece of at most 4 pixels
+ * (benchmarks/phase-thickness.h), so 3D pieces up to the same count go.
+ * Larger bounds removed hardly more: the slices' specks left are cuts
+ * through larger pieces, which are real features. */
 #define TS_SOLID_SPECK_VOXELS 4
 
 /* Face neighbour `k` (0..5) of voxel p, as the E-step sees it

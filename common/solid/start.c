@@ -4,19 +4,19 @@
  * A finer voxel takes the refined source of the orientation that won its
  * parent, not the source nearest the mean of its orientations' (which
  * the coarsest start still uses): that in-between choice was a majority
- * filter that rounded every level's shapes off at the start (128^3 blobs:
- * sharpness 0.91 at the end of one level, 0.82-0.87 at the start of the
- * next; now 1.00-1.05), and so the volume kept fewer, larger spots.
+ * filter that rounded every level's shapes off at the start (a level
+ * began blunter than the one before had ended), and so the volume kept
+ * fewer, larger spots.
  * A level that records sources (the finest, when asked) records the one
  * each start value copies.
  *
  * Along its own axis an orientation's refined source is the same on both
  * children of a parent, so every level's start held pairs of equal
  * planes, and what the short middle level could not undo stayed in the
- * volume as a lattice of blocks (128^3 blobs, seeds 1-6: `grid` 1.32-1.74
- * at periods 4 and 8, the coarser levels' cells). Each orientation now
- * pairs its children along its own axis at a random shift per block of
- * the slice: grid 1.07-1.19, sharpness within 0.01 (solid history, stop 55).
+ * volume as a lattice of blocks at the coarser levels' periods (4 and
+ * 8 voxels). Each orientation therefore pairs its children along its
+ * own axis at a random shift per block of the slice, which breaks the
+ * lattice and costs no sharpness.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/rng.h"
@@ -25,8 +25,9 @@
 #include <string.h>
 
 /* Side, in voxels of the slice, of the blocks that share one pairing
- * shift (below): with a shift per line of voxels (side 1) the slices
- * turned ragged and 128^3 blobs lost 0.02-0.04 of sharpness. */
+ * shift (below): large enough that edges within a block stay whole
+ * (with a shift per line of voxels the slices turned ragged and lost
+ * sharpness), small enough to break the lattice. */
 #define PAIRING_BLOCK 8
 
 /* Voxel p copies the source of orientation a: its colour, and which
@@ -82,11 +83,9 @@ value_from_sources (TsSolidLevel *l, size_t p)
  * drawn at random, so that the start holds each lightness phase in the
  * exemplar's share. The colour nearest the orientations' mean is a
  * majority vote of three unrelated blocks: it keeps a minority phase's
- * voxel only where two orientations agree (128^3 blobs, seed 2: a
- * coarsest start of 15 % dark voxels against the exemplar's 23 %), the
- * level then grew the spots it had instead of making new ones, and the
- * volume kept fewer, larger bodies (128^3, seeds 1-6: blobs' sharpness
- * mean 0.943 -> 0.977 x the truth's; solid history, stop 60). */
+ * voxel only where two orientations agree, so a minority phase starts
+ * well under its share; the level then grows the spots it has instead
+ * of making new ones, and the volume keeps fewer, larger bodies. */
 static void
 value_from_random_source (TsSolidLevel *l, size_t p, uint64_t random)
 {
@@ -132,11 +131,11 @@ block_of (size_t x, size_t n, size_t blocks, size_t phase, size_t *offset)
  * agree, rather than single random pixels. The blocks tile the period
  * at a random phase: blocks counted from the wrap made it a block
  * boundary in every volume, and such boundaries survive every level
- * (128^3 blobs, seed 4: seam 1.17 where no interior line passed 1.04).
+ * as a visible seam.
  * Each voxel's colour is drawn from one orientation, or with
  * `majority` is the one nearest their mean: the cell structure keeps
- * that, since with the draw 64^3 cells' axis-edges rose to 1.101 x the
- * exemplar's (seeds 1-3; 1.064 with the majority, aim 1.08). */
+ * that, since its guide lays the cells out anyway, and with the draw
+ * the three orientations' block edges left more axis-aligned edges. */
 void
 ts_solid_start_random_blocks (TsSolidLevel *l, size_t level, size_t block, uint32_t seed, bool majority)
 {

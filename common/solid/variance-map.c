@@ -8,13 +8,17 @@
 #include <string.h>
 
 /* Variance (summed over L, a, b) of an exemplar neighbourhood at which
- * its vote's error counts half, at the finest level. */
+ * its vote's error counts half, at the finest level: a spread of about
+ * 22 L* units, a clearly textured patch, so flat patches keep nearly
+ * their full error and edges count at a fraction. Absolute, not scaled
+ * to the exemplar's contrast: chosen on the truth solids (docs/design.md,
+ * Known limits). */
 #define TS_SOLID_FLAT_VARIANCE 500.0f
 /* At the coarser levels, the flat variance is this many times the
  * exemplar's median neighbourhood variance, so it follows each
- * exemplar's contrast: 2 gives 128^3 cells (median 69) 138 and blobs
- * (median 296) 593. An absolute 150 there blunted blobs (sharpness 0.88
- * instead of 0.91). */
+ * exemplar's contrast: a neighbourhood twice as varied as the typical
+ * one has its error halved. An absolute value there suited low-contrast
+ * exemplars and blunted high-contrast ones. */
 #define TS_SOLID_COARSE_FLAT_FACTOR 2.0f
 
 /* Summed-area tables would be faster, but the sums of squares of Lab
