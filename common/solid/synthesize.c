@@ -13,25 +13,26 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A level stops iterating once fewer voxels than this change. */
+/* A level stops iterating once fewer voxels than this change: a fifth
+ * of a percent is a few scattered voxels, no visible change. */
 #define TS_SOLID_CONVERGED_FRACTION 0.002
-/* The coarsest volume level keeps at least this edge where it can. */
+/* The coarsest volume level keeps at least this edge where it can:
+ * smaller, and a 9-voxel neighbourhood spans most of it, leaving no
+ * room to lay shapes out. */
 #define TS_SOLID_COARSEST_EDGE 16
 /* E-step weight per neighbour a vote continues (estep.c), at the finest
- * level: 1 takes 128^3 cells' sharpness 0.90 -> 0.92 and cleans their
- * mortar of lone voxels; 2 and 4 blunt blobs (0.90 and 0.89, below 0.9 x
- * the truth's). At the coarser levels too it gave cells straighter
- * polygons, but 64^3 blobs' coherence 1.18 x the truth's (bound 1.15). */
+ * level: 1 (a vote continuing one neighbour counts double) cleans thin
+ * phases of lone voxels and sharpens; 2 and more blunted spots. At the
+ * coarser levels it cost the spots' coherence. Chosen on the truth
+ * solids. */
 #define TS_SOLID_CONTINUATION 1.0f
 /* Weight of the position histogram's excess (position-histogram.c), at
- * the finest level only: at every level (weight 6), 128^3 cells' stones
- * broke into small pieces (coherence 1.17-1.23x the truth's); weight 6
- * at the finest level alone gave 1.16-1.17x with 3 iterations. Not with
- * the cell structure: there the guide and the cell tones already spread
- * the copies, and its push to unused exemplar positions made
- * neighbouring voxels switch sources, a grain in stones and joints
- * (128^3 seeds 1-5 without it: coherence 1.040 x the truth's from
- * 1.080, completeness 1.091 from 1.100, specks 0.92 x from 1.17). */
+ * the finest level only: at the coarser levels its push to unused
+ * positions broke large shapes into small pieces, and twice this weight
+ * cost coherence at the finest level too. Not with the cell structure:
+ * there the guide and the cell tones already spread the copies, and the
+ * push made neighbouring voxels switch sources, a grain in stones and
+ * joints. Chosen on the truth solids. */
 #define TS_SOLID_POSITION_WEIGHT 3.0f
 
 typedef struct
