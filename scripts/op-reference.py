@@ -251,8 +251,10 @@ def page(ops):
         "disagree." % REGENERATE,
         "",
         "Every texsynth GEGL operation, with its keys, pads and properties as "
-        "GEGL reports them. On the `gegl` command line a property is set as "
-        "`name=value` after the op, an enum by the nick shown in code, e.g. "
+        "GEGL reports them, the properties in the order the op declares them "
+        "(the order of `gegl --info` and of generated dialogs). On the `gegl` "
+        "command line a property is set as `name=value` after the op, an enum "
+        "by the nick shown in code, e.g. "
         "`gegl -i in.png -o out.png -- texsynth:synthesize width=1024 seed=3`. "
         "Ranges are the values GEGL accepts. UI hints are the ops' ui-meta keys, "
         "read by front ends such as GIMP: `visible` 0 keeps a property out of "
