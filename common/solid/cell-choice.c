@@ -25,7 +25,7 @@
  * over 0.9, other stones-in-ground kinds under 0.45. */
 #define TS_THIN_JOINT_SHARE 0.75
 /* Dark pieces smaller than this (4-connected pixels) are specks in the
- * stones, not joints. */
+ * stones, not joints: a joint runs between stones for many pixels. */
 #define TS_JOINT_MIN_PIXELS 8
 /* Cells lay out their walls in every direction: at most this share of
  * the gradient energy may lie within TS_AXIS_DEGREES of the axes. Edges

@@ -40,7 +40,8 @@
  * lower bound stretched further and began to cost coherence. Chosen on
  * the cells truth. */
 #define GUIDE_MIN_SLANT 0.5f
-/* Bins of the histogram that places the walls' thickness. */
+/* Bins of the histogram that places the walls' thickness: fine enough
+ * that one bin is far below a voxel at any volume size. */
 #define GUIDE_BINS 4096
 
 /* The alpha code of a distance (solid.h): slope `near` within `knee`

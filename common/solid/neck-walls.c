@@ -16,13 +16,17 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* The ground voxel a wall copies lies at most this far along each axis. */
+/* The ground voxel a wall copies lies at most this far along each axis:
+ * a neck is at most a few voxels across, so ground lies this near on
+ * either side; a wall with none within reach keeps its value. */
 #define TS_SOLID_WALL_REACH 3
 
+/* Each voxel's phase. */
 #define GROUND 0
 #define PIECE 1
 #define WALL 2
 
+/* The watershed's parent of a voxel not yet flooded, and of a wall. */
 #define UNSEEN (-1)
 #define WALLED (-2)
 

@@ -6,7 +6,8 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 
-/* Bins per unit of CIE L (0-100). */
+/* Bins per unit of CIE L (0-100): a tenth of a unit, far below a
+ * visible step, so the percentiles are as good as a sort's. */
 #define TS_PHASE_BINS_PER_L 10
 #define TS_PHASE_BINS (100 * TS_PHASE_BINS_PER_L + 1)
 /* Where the joint split lies between the 5th and the 95th percentile.
