@@ -3,7 +3,7 @@
  * .vol file. quality-solid.py --truth takes its z = 0 slice as the
  * exemplar and measures other slices of it: what a perfect solid scores
  * on the quality figures, against which synthesised volumes are judged.
- * Usage: solid-truth cells|blobs|grains SIZE SEED OUT.vol
+ * Usage: solid-truth KIND SIZE SEED OUT.vol  (KIND: one of truth-solids.h's)
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "truth-solids.h"
 #include "volume/volume.h"
@@ -21,7 +21,10 @@ main (int argc, char **argv)
 
   if (size < 8 || size > 1024)
     {
-      fprintf (stderr, "usage: solid-truth cells|blobs|grains SIZE(8..1024) SEED OUT.vol\n");
+      fprintf (stderr, "usage: solid-truth KIND SIZE(8..1024) SEED OUT.vol; KIND:");
+      for (const char *const *kind = truth_solid_kinds (); *kind; kind++)
+        fprintf (stderr, " %s", *kind);
+      fputc ('\n', stderr);
       return 2;
     }
   n = (size_t) size;
@@ -35,7 +38,7 @@ main (int argc, char **argv)
   v.wrap = true;
   if (!truth_solid_render (argv[1], n, (uint32_t) strtoul (argv[3], NULL, 10), v.voxels))
     {
-      fprintf (stderr, "usage: solid-truth cells|blobs|grains SIZE(8..1024) SEED OUT.vol\n");
+      fprintf (stderr, "solid-truth: unknown kind '%s' or out of memory\n", argv[1]);
       free (v.voxels);
       return 2;
     }
