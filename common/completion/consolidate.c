@@ -14,13 +14,14 @@
 #define TS_HEAL_SEAM_UNKNOWN 1e5f
 
 /* Weight of a mismatch with a known neighbour against one between two
- * copies: the outline shows against the original, so it decides first
- * (boundary median of the bundled photos 1.10 with 1, 1.06 with 4). */
+ * copies: the outline shows against the original, so it decides first.
+ * Fitted to the bundled heal cases (docs/design.md, Known limits). */
 #define TS_HEAL_SEAM_OUTLINE 4.0f
 
 /* Pixels whose copy offsets a pixel weighs: those up to this far (a 5x5
- * window; 4-neighbours only: median fill_bds of the bundled textures
- * 10.26 against 10.10, worst photo boundary 1.21 against 1.18). */
+ * window): a little wider than the 4-neighbours, so a label settles on
+ * what its surroundings show, not only its next pixels, which gave
+ * slightly better seams. */
 #define TS_HEAL_REACH 2
 #define TS_HEAL_REACH_SIDE (2 * TS_HEAL_REACH + 1)
 static const int nx4[4] = { 1, -1, 0, 0 }, ny4[4] = { 0, 0, 1, -1 };

@@ -6,9 +6,10 @@
 #include <stdlib.h>
 
 /* Weight of the penalty: per patch pixel, (missing mean |grad L|)^2 times
- * this. On the bundled cases 0 gives fill sharpness 0.86 / 0.89
- * (textures / photos), 1.5 gives 0.95 / 1.0, 2 gives 0.97 / 1.03 but
- * cracked's blob a boundary of 1.33. */
+ * this. Without it fills come out flatter than their surroundings; too
+ * strong, and it picks busy sources that show at the hole's outline.
+ * 1.5 brings the fill's sharpness to about the surroundings'.
+ * Fitted to the bundled heal cases (docs/design.md, Known limits). */
 #define TS_HEAL_FLATNESS_WEIGHT 1.5
 
 static double

@@ -10,23 +10,24 @@
 #include <string.h>
 
 /* Sweeps of over-relaxed Gauss-Seidel. The start (the outline offsets)
- * already holds the slow components, so few sweeps do: on the bundled
- * cases 40 and 400 give the same measures to 0.01. */
+ * already holds the slow components, so few sweeps do: ten times as
+ * many change the result by less than the measures resolve. */
 #define TS_HEAL_BLEND_MIN_SWEEPS 24
 #define TS_HEAL_BLEND_MAX_SWEEPS 40
 /* Weight of the step between two filled neighbours copied from different
- * places (a seam), against 1 within a copy or next to a known pixel: the
- * seam's jump is spread thinly over the copies, which keep their own
- * steps (median fill sharpness of the textures 0.81 with 1, 0.86 with
- * 0.01, measured before the flatness penalty). */
+ * places (a seam), against 1 within a copy or next to a known pixel:
+ * small, so the seam's jump is spread thinly over the copies, which keep
+ * their own steps; at equal weight the blend smoothed the copies'
+ * detail away. */
 #define TS_HEAL_SEAM_WEIGHT 0.01f
 
 /* Screening of the blend: weight of a copied pixel's pull to its own
  * value, TS_HEAL_SCREEN * g^2 / (g^2 + KAPPA^2) with g^2 its source's mean
- * squared L step (Lab units). On the bundled cases it keeps the
- * textures' copies whole (median fill_bds 11.2 unscreened, 10.3 so)
- * while the photos' smooth backgrounds still blend (boundary median
- * 1.06, worst 1.21; a flat 0.2 everywhere gives 1.38 / 1.44). */
+ * squared L step (Lab units): busy copies (steps well above KAPPA) hold
+ * to their own values and stay whole, while smooth backgrounds (steps
+ * below it) still blend into the surroundings; one screening for every
+ * pixel did one or the other. Fitted to the bundled heal cases
+ * (docs/design.md, Known limits). */
 #define TS_HEAL_SCREEN 0.2f
 #define TS_HEAL_SCREEN_KAPPA 6.0f
 

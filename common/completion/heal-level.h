@@ -9,9 +9,9 @@
 
 #include <stdint.h>
 
-/* Patch sizes chosen when the caller leaves them automatic: 7x7 carries
- * brick courses and mortar lines over at every level of the bundled
- * cases, and is the window the measures use. */
+/* Patch sizes chosen when the caller leaves them automatic: 7x7 holds
+ * a mortar line with the stone on both sides, so courses and joints
+ * carry over, and is the window the measures use. */
 #define TS_HEAL_DEFAULT_PATCH 7
 /* Loops over fewer items than this run on one thread: a team's start and
  * barrier cost more than they save on small levels, and far more when

@@ -14,6 +14,8 @@
 #define MAX_DIMS (3 + TS_MAX_FEATURE_CHANNELS)
 /* A feature's 0..1 at weight 1 spans as much as L's 0..100. */
 #define FEATURE_SCALE 100.0
+/* Cyclic Jacobi converges quadratically, in about ten sweeps or fewer
+ * for these small matrices; the cap only bounds a pathological input. */
 #define JACOBI_SWEEPS 64
 
 /* Eigen-decomposition of the symmetric n x n `a` (destroyed) by cyclic

@@ -7,6 +7,9 @@
 
 #include "image.h"
 
+/* Bins per channel: fine enough to tell the colours of a texture's
+ * phases apart, coarse enough that every bin of a small exemplar holds
+ * enough pixels for a steady density. */
 #define TS_HISTOGRAM_BINS 32
 
 typedef struct

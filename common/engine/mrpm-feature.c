@@ -8,6 +8,8 @@
 
 #define PCA_SAMPLES 256    /* covariance estimate: enough for <= 32 axes */
 #define PCA_OVERSAMPLE 4   /* extra block columns speed up convergence   */
+/* Simultaneous-iteration steps: with the oversampled block a few
+ * suffice for the leading axes a feature keeps. */
 #define PCA_ITERATIONS 4
 
 

@@ -6,7 +6,12 @@
 #include <omp.h>
 #endif
 
+/* Most k-coherence candidates at any level: k grows by 3 per coarser
+ * level, and the tables hold k per exemplar pixel, so this bounds their
+ * memory at deep pyramids. */
 #define TS_MAX_K_LEVEL 30
+/* Iterations per pass at the finest level: it starts from the coarser
+ * level's converged layout and only refines edges. */
 #ifndef TS_FINEST_ITERATIONS
 #define TS_FINEST_ITERATIONS 2
 #endif
@@ -71,10 +76,10 @@ void
 ts_schedule_level (const TsParams *params, size_t level, size_t levels,
                    size_t ex_w, size_t ex_h, TsLevelPlan *plan)
 {
-  /* Measured on the shared exemplars: smaller coarse neighbourhoods cut
-   * plain results into more pieces (copy 0.27 instead of 0.40 at the same
-   * coherence); a wrap-around result has no free border and keeps larger
-   * ones (median coherence 0.99 instead of 1.27). */
+  /* Smaller coarse neighbourhoods cut plain results into more, smaller
+   * copies at the same coherence; a wrap-around result has no free
+   * border to settle its layout against and keeps larger ones, which
+   * made it clearly more coherent. */
   bool wrap = params->wrap_x || params->wrap_y;
   size_t coarse_large = wrap ? 11 : 9, coarse_small = wrap ? 7 : 5;
   size_t large = params->patch_size ? (size_t) params->patch_size : (level == 0 ? 11 : coarse_large);

@@ -22,12 +22,15 @@ typedef struct
   TsPass pass[2];
 } TsLevelPlan;
 
+/* The best median quality over the bundled exemplars, and fast
+ * (params.c). */
 #define TS_DEFAULT_QUALITY 2
 
 /* Default memory limit: a quarter of the RAM, at least 1 GiB. */
 size_t ts_default_memory_limit (void);
 
-/* Coarsest exemplar level's shorter side the pyramid aims for. */
+/* Coarsest exemplar level's shorter side the pyramid aims for: room
+ * for a few of the largest neighbourhoods, so the layout has choices. */
 #define TS_COARSEST_SIDE 32
 
 int    ts_schedule_threads (void);

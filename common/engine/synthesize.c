@@ -11,7 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A level stops iterating once fewer output pixels than this change. */
+/* A level stops iterating once fewer output pixels than this change: a
+ * fifth of a percent, a few scattered pixels. */
 #define TS_CONVERGED_FRACTION 0.002
 /* Occurrence penalty per unit of over-use, in exemplar variances. */
 #define TS_OCCURRENCE_STRENGTH 0.1f
