@@ -11,8 +11,8 @@
 
 /* Preserve rises over this fraction of the narrower band, on both sides
  * of a join (and joins move inwards as far): wider is freer to heal, but
- * lets the optimization alter more of what was exact (0.7 gave
- * worse seams on the shared exemplars; 0.35 much the same). */
+ * lets the optimization alter more of what was exact; half the band
+ * balances the two, and the seams change little around it. */
 #define TS_TILEABLE_TRANSITION 0.5
 /* Bounds the search for joins (and its memory) in huge images. */
 #define TS_TILEABLE_MAX_REACH 256

@@ -8,16 +8,20 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The exhaustive search runs on a copy whose longer side is at most this. */
+/* The exhaustive search runs on a copy whose longer side is at most
+ * this: every shift of a 64 x 64 copy is cheap to try, and it still
+ * shows the texture's large features. */
 #define TS_SHIFT_COARSEST_SIDE 64
-/* Finer levels try the doubled coarser shift +- this. */
+/* Finer levels try the doubled coarser shift +- this: one coarse pixel
+ * of rounding either way, and a little room to move. */
 #define TS_SHIFT_REFINE 2
+/* Halvings from the coarsest copy up: 64 x 2^16 is beyond any image. */
 #define TS_SHIFT_MAX_LEVELS 16
 /* Weight of the detail term against the mismatch term (about 1 for
  * unrelated content): band content 20% less detailed than what it
  * replaces costs as much as a mismatch 0.16 worse. Without it the search
- * favours flat pieces, which match anything but dull the edges (cracked
- * lost 15% of its sharpness). */
+ * favours flat pieces, which match anything but dull the edges: a
+ * textured image could lose a sixth of its sharpness. */
 #define TS_SHIFT_DETAIL_WEIGHT 4.0
 
 typedef struct
