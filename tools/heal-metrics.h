@@ -30,7 +30,11 @@
 
 #include <stdint.h>
 
+/* The surroundings a fill is judged against: near enough to be what
+ * the eye compares it with, wide enough to hold several texture
+ * features. */
 #define TS_HEAL_MEASURE_NEAR 64
+/* Far below one 8-bit step (about 0.4 L*), far above float rounding. */
 #define TS_HEAL_MEASURE_SAME 0.01f
 
 typedef struct

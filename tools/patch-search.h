@@ -20,6 +20,8 @@
 
 #include "texsynth.h"
 
+/* Most principal coordinates an index keeps per window: bounds its
+ * memory; the measures ask for fewer (metrics.c). */
 #define TS_SEARCH_MAX_LIFT 32
 #define TS_SEARCH_MAX_RADIUS 7
 #define TS_SEARCH_NONE ((size_t) -1)
