@@ -15,6 +15,9 @@
 #include <unistd.h>
 
 #define KEY_BYTES 32 /* SHA-256 */
+/* Bytes of cached volumes at most, unless TEXSYNTH_VOLUME_CACHE_MIB says
+ * otherwise or a quarter of the RAM is less (as the engine's own
+ * default limit): four 256^3 volumes of 16 bytes a voxel. */
 #define DEFAULT_LIMIT ((size_t) 1 << 30)
 
 typedef enum
