@@ -15,7 +15,9 @@
 /* Kopf et al. 2007 use 16 bins per channel. */
 #define TS_SOLID_HISTOGRAM_BINS 16
 /* The E-step visits voxels in this many random batches, refreshing the
- * histogram weights between them. */
+ * histogram weights between them: often enough that the weights follow
+ * the volume as it changes, each batch still large enough to keep the
+ * threads busy. */
 #define TS_SOLID_BATCHES 16
 /* Below this edge a level's loops run on one thread: the work is too
  * small to repay waking the others, above all on a busy machine. */
@@ -70,7 +72,10 @@ TsStatus ts_solid_mask_pieces (const uint8_t *mask, size_t w, size_t h, TsSolidP
 #define TS_SOLID_PIECES_APART 0.5
 /* A vote whose source's signed distance to the phase boundary differs
  * by z from the voxel's weighs 1 / (1 + (z / SIGMA)^2); distances are
- * clipped to +-CLIP first (voxels or pixels). */
+ * clipped to +-CLIP first (voxels or pixels): only the two pixels either
+ * side of a boundary say where it lies, and a vote from across it (z up
+ * to 4) keeps about a third of its weight, so the guide steers without
+ * vetoing. Chosen on the truth solids (docs/design.md, Known limits). */
 #define TS_SOLID_PHASE_SIGMA 3.0f
 #define TS_SOLID_PHASE_CLIP 2.0f
 /* Two basins of the phase in pieces stay apart where both peaks rise
