@@ -1,8 +1,10 @@
 /* texsynth-measure: quality measures of a synthesised texture against its
- * exemplar (definitions in metrics.h).
+ * exemplar (definitions in metrics.h), and with --shapes the shapes of
+ * their phases (shape-metrics.h).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "metrics.h"
+#include "shape-metrics.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -13,6 +15,7 @@
 
 static const char usage_text[] =
   "Usage: texsynth-measure [OPTION]... EXEMPLAR RESULT\n"
+  "  or:  texsynth-measure --shapes [--phases=N] [--json] EXEMPLAR RESULT...\n"
   "Measures how well RESULT, synthesised from EXEMPLAR, reproduces it.\n"
   "Images are compared in CIE Lab over 7x7 windows (alpha is ignored).\n"
   "\n"
@@ -22,6 +25,10 @@ static const char usage_text[] =
   "  --tileable=x    ... horizontally only (left/right edges)\n"
   "  --tileable=y    ... vertically only (top/bottom edges)\n"
   "  --json          print one JSON object instead of name: value lines\n"
+  "  --shapes        measure the shapes of the phases of EXEMPLAR and of each\n"
+  "                  RESULT instead (see Shapes below)\n"
+  "  --phases=N      with --shapes: split the colours into N = 2 (default) or 3\n"
+  "                  phases\n"
   "  -h, --help      print this help and exit\n"
   "\n"
   "Measures (distances are RMS Lab differences per value, sqrt(SSD / 147)):\n"
@@ -44,7 +51,26 @@ static const char usage_text[] =
   "                some orientations (0 = isotropic, 1 = all one way or on a\n"
   "                grid); axis-edges is meant for exemplars near 0\n"
   "\n"
-  "Both images must be at least 7x7 pixels. Exit status: 0 on success,\n"
+  "Shapes (--shapes): k-means on EXEMPLAR's Lab colours (started from the\n"
+  "mean colours of N equal-count bands of its lightness) gives N phase\n"
+  "centres; every image's pixels go to the nearest centre, phase 0 the\n"
+  "darkest. Per image and phase:\n"
+  "  fraction        share of the pixels in the phase\n"
+  "  chord-rows      mean length of the phase's runs along rows, and along\n"
+  "  chord-columns   columns (runs cut by the image's edge count as seen)\n"
+  "  solidity        over the phase's 4-connected components of at least 12\n"
+  "                  pixels, the area-weighted mean of area / convex-hull area\n"
+  "                  (hull around the pixel squares' corners: 1 for a\n"
+  "                  rectangle, near 1 for a disc); nan if there are none\n"
+  "  components      how many components of at least 12 pixels\n"
+  "  s2              two-point correlation for r = 1..32 pixels: probability\n"
+  "                  that two pixels r apart both lie in the phase, mean of\n"
+  "                  rows and columns, pairs inside the image only (no wrap)\n"
+  "Text output gives the centres, then per image a line per phase and a\n"
+  "line of its 32 s2 values; --json one object with \"centres\" and\n"
+  "\"images\" (each with \"path\", \"role\" and per phase the values above).\n"
+  "\n"
+  "Every image must be at least 7x7 pixels. Exit status: 0 on success,\n"
   "2 on bad arguments or images that cannot be read or are too small.\n";
 
 static int
@@ -94,7 +120,7 @@ load (const char *path, TsImage *image)
   if (image->width < TS_MEASURE_MIN_SIDE || image->height < TS_MEASURE_MIN_SIDE)
     {
       fprintf (stderr,
-               "texsynth-measure: '%s' is %zux%zu pixels; both images must be "
+               "texsynth-measure: '%s' is %zux%zu pixels; every image must be "
                "at least %dx%d\n",
                path, image->width, image->height, TS_MEASURE_MIN_SIDE, TS_MEASURE_MIN_SIDE);
       return false;
@@ -102,12 +128,153 @@ load (const char *path, TsImage *image)
   return true;
 }
 
+/* A JSON string: `text` quoted, with quotes, backslashes and control
+ * characters escaped. */
+static void
+print_json_string (const char *text)
+{
+  putchar ('"');
+  for (const unsigned char *c = (const unsigned char *) text; *c; c++)
+    if (*c == '"' || *c == '\\')
+      printf ("\\%c", *c);
+    else if (*c < 0x20)
+      printf ("\\u%04x", *c);
+    else
+      putchar (*c);
+  putchar ('"');
+}
+
+static void
+print_number (double value, bool json)
+{
+  if (isfinite (value))
+    printf (json ? "%.6g" : "%.4f", value);
+  else
+    fputs (json ? "null" : "nan", stdout);
+}
+
+static void
+print_shapes (const char *path, bool is_exemplar, const TsImage *image, const TsPhaseShape *shape,
+              int phases, bool json)
+{
+  if (json)
+    {
+      fputs ("{\"path\": ", stdout);
+      print_json_string (path);
+      printf (", \"role\": \"%s\", \"size\": [%zu, %zu], \"phases\": [",
+              is_exemplar ? "exemplar" : "result", image->width, image->height);
+    }
+  else
+    printf ("%s: %s\n", is_exemplar ? "exemplar" : "result", path);
+  for (int k = 0; k < phases; k++)
+    {
+      const TsPhaseShape *p = &shape[k];
+      if (json)
+        {
+          printf ("%s{\"fraction\": ", k ? ", " : "");
+          print_number (p->fraction, true);
+          fputs (", \"chord_rows\": ", stdout);
+          print_number (p->chord_rows, true);
+          fputs (", \"chord_columns\": ", stdout);
+          print_number (p->chord_columns, true);
+          fputs (", \"solidity\": ", stdout);
+          print_number (p->solidity, true);
+          printf (", \"components\": %zu, \"s2\": [", p->components);
+        }
+      else
+        {
+          printf ("  phase %d: fraction ", k);
+          print_number (p->fraction, false);
+          fputs (" chord-rows ", stdout);
+          print_number (p->chord_rows, false);
+          fputs (" chord-columns ", stdout);
+          print_number (p->chord_columns, false);
+          fputs (" solidity ", stdout);
+          print_number (p->solidity, false);
+          printf (" components %zu\n  phase %d s2:", p->components, k);
+        }
+      for (int r = 1; r <= TS_SHAPE_MAX_LAG; r++)
+        {
+          fputs (json ? (r > 1 ? ", " : "") : " ", stdout);
+          print_number (p->s2[r], json);
+        }
+      fputs (json ? "]}" : "\n", stdout);
+    }
+  if (json)
+    fputs ("]}", stdout);
+}
+
+/* --shapes: the phases' centres from paths[0], then every image's shapes,
+ * all measured before any is printed, so a failure prints no figures. */
+static int
+measure_shapes (const char *const *paths, int n_paths, int phases, bool json)
+{
+  TsPhaseCentres centres;
+  TsPhaseShape *shapes = malloc ((size_t) n_paths * TS_SHAPE_MAX_PHASES * sizeof *shapes);
+  TsImage *sizes = calloc ((size_t) n_paths, sizeof *sizes);
+  TsImage image = { 0 };
+  TsMeasureStatus status = TS_MEASURE_OK;
+  int code = EXIT_USAGE, measured = 0;
+
+  if (!shapes || !sizes)
+    {
+      free (shapes);
+      free (sizes);
+      return fail ("%s", "out of memory");
+    }
+  ts_io_init ();
+  for (; measured < n_paths && status == TS_MEASURE_OK; measured++)
+    {
+      if (!load (paths[measured], &image))
+        break;
+      if (measured == 0)
+        status = ts_shape_centres (&image, phases, &centres);
+      if (status == TS_MEASURE_OK)
+        status = ts_shape_measure (&image, &centres, shapes + (size_t) measured * TS_SHAPE_MAX_PHASES);
+      sizes[measured] = (TsImage) { image.width, image.height, NULL };
+      free (image.pixels);
+      image.pixels = NULL;
+    }
+  if (status != TS_MEASURE_OK)
+    fail ("%s", status == TS_MEASURE_OUT_OF_MEMORY ? "out of memory: the images are too large to measure"
+                                                    : "an image has too few pixels");
+  else if (measured == n_paths)
+    {
+      if (json)
+        printf ("{\"phases\": %d, \"max_lag\": %d, \"centres\": [", phases, TS_SHAPE_MAX_LAG);
+      else
+        printf ("phases: %d (k-means on the exemplar's Lab colours, darkest first)\n", phases);
+      for (int k = 0; k < phases; k++)
+        if (json)
+          printf ("%s[%.6g, %.6g, %.6g]", k ? ", " : "", centres.centre[k][0], centres.centre[k][1],
+                  centres.centre[k][2]);
+        else
+          printf ("centre %d: L %.2f a %.2f b %.2f\n", k, centres.centre[k][0], centres.centre[k][1],
+                  centres.centre[k][2]);
+      if (json)
+        fputs ("], \"images\": [", stdout);
+      for (int i = 0; i < n_paths; i++)
+        {
+          if (json && i > 0)
+            fputs (", ", stdout);
+          print_shapes (paths[i], i == 0, &sizes[i], shapes + (size_t) i * TS_SHAPE_MAX_PHASES, phases, json);
+        }
+      if (json)
+        fputs ("]}\n", stdout);
+      code = fflush (stdout) == 0 ? EXIT_SUCCESS : EXIT_USAGE;
+    }
+  free (shapes);
+  free (sizes);
+  return code;
+}
+
 int
 main (int argc, char **argv)
 {
-  const char *paths[2] = { NULL, NULL };
-  int n_paths = 0;
-  bool json = false, wrap_x = false, wrap_y = false, options_done = false;
+  /* the paths, gathered at the front of argv's arguments */
+  const char *const *paths = (const char *const *) argv + 1;
+  int n_paths = 0, phases = TS_SHAPE_DEFAULT_PHASES;
+  bool json = false, wrap_x = false, wrap_y = false, options_done = false, shapes = false;
   TsImage exemplar = { 0 }, result = { 0 };
   TsMeasures m;
   TsMeasureStatus status;
@@ -117,11 +284,7 @@ main (int argc, char **argv)
     {
       const char *a = argv[i];
       if (options_done || a[0] != '-' || a[1] == '\0')
-        {
-          if (n_paths == 2)
-            return usage_error ("too many arguments ('%s'): expected EXEMPLAR RESULT", a);
-          paths[n_paths++] = a;
-        }
+        argv[1 + n_paths++] = argv[i];
       else if (strcmp (a, "--") == 0)
         options_done = true;
       else if (strcmp (a, "-h") == 0 || strcmp (a, "--help") == 0)
@@ -131,6 +294,12 @@ main (int argc, char **argv)
         }
       else if (strcmp (a, "--json") == 0)
         json = true;
+      else if (strcmp (a, "--shapes") == 0)
+        shapes = true;
+      else if (strcmp (a, "--phases=2") == 0 || strcmp (a, "--phases=3") == 0)
+        phases = a[9] - '0';
+      else if (strncmp (a, "--phases", 8) == 0)
+        return usage_error ("invalid phases in '%s': use --phases=2 or --phases=3", a);
       else if (strcmp (a, "--tileable") == 0 || strcmp (a, "--tileable=xy") == 0
                || strcmp (a, "--tileable=yx") == 0 || strcmp (a, "--tileable=both") == 0)
         wrap_x = wrap_y = true;
@@ -143,6 +312,14 @@ main (int argc, char **argv)
       else
         return usage_error ("unknown option '%s'", a);
     }
+  if (n_paths > 2 && !shapes)
+    return usage_error ("too many arguments ('%s'): expected EXEMPLAR RESULT", paths[2]);
+  if (phases != TS_SHAPE_DEFAULT_PHASES && !shapes)
+    return usage_error ("%s", "--phases needs --shapes");
+  if ((wrap_x || wrap_y) && shapes)
+    return usage_error ("%s", "--tileable does not apply to --shapes");
+  if (n_paths >= 2 && shapes)
+    return measure_shapes (paths, n_paths, phases, json);
   if (n_paths < 2)
     return usage_error ("%s", n_paths == 0 ? "missing EXEMPLAR and RESULT"
                                            : "missing RESULT (expected EXEMPLAR RESULT)");
