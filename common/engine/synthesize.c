@@ -14,7 +14,9 @@
 /* A level stops iterating once fewer output pixels than this change: a
  * fifth of a percent, a few scattered pixels. */
 #define TS_CONVERGED_FRACTION 0.002
-/* Occurrence penalty per unit of over-use, in exemplar variances. */
+/* Occurrence penalty per unit of over-use, in exemplar variances: a
+ * tenth, so it decides between matches about equally good but never
+ * outweighs a visibly better one. */
 #define TS_OCCURRENCE_STRENGTH 0.1f
 /* Width of the band around a tile edge whose coherence matters: the
  * 7x7 windows that straddle it. */

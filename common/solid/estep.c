@@ -6,9 +6,9 @@
  * No blending and no mode: a mean of the votes, or the vote nearest
  * their mode, is an in-between pixel wherever the orientations disagree,
  * and the volume loses the exemplar's fine grain and edges. Taking the
- * single best vote keeps
- * whole exemplar neighbourhoods together: neighbouring voxels covered by
- * the same well-matched neighbourhood copy its pixels.
+ * single best vote keeps whole exemplar neighbourhoods together:
+ * neighbouring voxels covered by the same well-matched neighbourhood
+ * copy its pixels.
  *
  * Inertia: a vote for the voxel's current value weighs TS_SOLID_INERTIA
  * times more. Winner-takes-all votes erode the structure a level starts
@@ -34,8 +34,8 @@
  * neighbours yields to the heaviest vote of the other phase. Such a voxel
  * is a sliver where two copies meet, a speck that solid textures do not
  * have, and sharpness counts it as edge. A voxel of a one-voxel sheet
- * or thread keeps same-phase
- * neighbours and stays. At least TS_SOLID_LONE_KNOWN neighbours outside
+ * or thread keeps same-phase neighbours and stays. At least
+ * TS_SOLID_LONE_KNOWN neighbours outside
  * the current batch must say so. With the cell structure the joint split
  * (phase-split.c) makes a third class, the joints below it: a vote is
  * then lone if its side of either split is none of its neighbours', and
@@ -44,8 +44,8 @@
  * lone voxels of the dark stones between the splits stay. A light voxel
  * in a dark stone is often held by its one light face neighbour, so a
  * light voxel with five face neighbours below the phase split also
- * counts as lone; five, not four: at four fewer light sections were
- * left than the exemplar has.
+ * counts as lone; five, not four: at four, slices showed fewer light
+ * sections than the exemplar has.
  *
  * Pieces kept apart (the level's `kept_apart`, at the finest level for
  * stones in mortar): a vote that would join two stones through a joint

@@ -16,7 +16,8 @@
  * of 30 in that pass's E-step and the M-step searches 4/9 as many
  * centres: a large volume runs about a quarter faster, with quality
  * within the seed-to-seed spread. Small volumes are fast anyway, and
- * there the fewer votes blunted the cells, so they keep 2. */
+ * there the fewer votes blunted the cells, so they keep 2; where the
+ * edge lies between is fitted (docs/design.md, Known limits). */
 #define TS_SOLID_FINEST_SPACING 3
 #define TS_SOLID_SPARSE_EDGE 128
 /* Finest level's iterations per pass (2D: 2): a volume converges more
