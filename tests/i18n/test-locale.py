@@ -97,6 +97,7 @@ def main():
         languages = [w for line in f if not line.startswith("#") for w in line.split()]
     scratch = tsops.workdir()
     english = None
+    no_locale = []
     for lang in ["et"] + [lang for lang in languages if lang != "et"]:
         if lang == "et":
             env, how = estonian_or_skip(scratch), "et_EE.UTF-8"
@@ -104,6 +105,7 @@ def main():
             env, how = locale_env(lang, scratch)
         if env is None:
             tsops.note("%s: no locale, not checked" % lang)
+            no_locale.append(lang)
             continue
         tsops.note("\n--- %s: %s" % (lang, how))
         env["TEXSYNTH_LOCALEDIR"] = args.localedir
@@ -126,7 +128,9 @@ def main():
                 [sys.executable, os.path.abspath(__file__), "--probe"], env=c_env,
                 capture_output=True, text=True, timeout=120).stdout.splitlines()[0])
         check_language(lang, catalogue, shown, english, run.stderr)
-    tsops.finish()
+    tsops.finish(skipped="" if not no_locale else
+                 "%s: their locales are missing and localedef cannot make them (Debian "
+                 "package 'locales')" % ", ".join(no_locale))
 
 
 def check_language(lang, catalogue, shown, english, stderr):

@@ -33,12 +33,17 @@ def check(condition, message):
     return condition
 
 
-def finish():
+def finish(skipped=""):
+    """Exits 1 if a check failed; else 77 (SKIP) if `skipped` names checks
+    this machine cannot make, saying why; else 0."""
     if _failures:
         note("\n%d check(s) failed:" % len(_failures))
         for message in _failures:
             note("  - " + message)
         sys.exit(1)
+    if skipped:
+        note("\nSKIP  every check made passed, but not made here: " + skipped)
+        sys.exit(77)
     note("\nall checks passed")
     sys.exit(0)
 
