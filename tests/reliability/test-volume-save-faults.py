@@ -1,9 +1,18 @@
 # texsynth:volume-save under file-system faults: a full disk (a 128 KiB
-# tmpfs, as root in a private mount namespace), a file size limit
-# (RLIMIT_FSIZE in the gegl tool's process), a read-only or unwritable
-# folder, and the process killed midway. Every case must give a warning
-# that names the problem, leave the older files at the paths byte for byte
-# as they were, and leave no new or temporary file behind.
+# tmpfs in a private mount namespace), a file size limit (RLIMIT_FSIZE in
+# the gegl tool's process), a read-only file system, an unwritable folder,
+# and the process killed midway. Every case must give a warning that names
+# the problem, leave the older files at the paths byte for byte as they
+# were, and leave no new or temporary file behind.
+#
+# The mount namespace is root's own, or for any other user one inside a
+# user namespace where the user is root (unshare -r). Where none can be
+# made, the full disk is a file size limit below every file's size, and
+# the unwritable folder stands for the read-only file system. Root writes
+# through permissions, so for the unwritable folder the gegl process runs
+# in a user namespace (unshare --user); where root can make neither kind
+# of namespace, the test exits 77 saying what it could not check, once
+# every check it could make has passed.
 #
 # GEGL 0.4 has no way to cancel an operation once its process() runs
 # (gegl_operation_progress() returns nothing, and hosts such as GIMP stop
@@ -42,11 +51,12 @@ def child_env(scratch):
     return env
 
 
-def gegl_save(scratch, path, size, preexec=None, wait=True, extra=()):
-    """gegl -i bark.png -- texsynth:volume-save path=... size=...: the
-    process, or (returncode, warnings)."""
-    args = [tsops.gegl_binary(), "-i", tsops.exemplar("bark.png"), "--", SAVE,
-            "path=" + path, "size=%d" % size] + SETTINGS + list(extra)
+def gegl_save(scratch, path, size, preexec=None, wait=True, extra=(), prefix=()):
+    """gegl -i bark.png -- texsynth:volume-save path=... size=... (run
+    under the command `prefix`, if any): the process, or (returncode,
+    warnings)."""
+    args = list(prefix) + [tsops.gegl_binary(), "-i", tsops.exemplar("bark.png"), "--", SAVE,
+                           "path=" + path, "size=%d" % size] + SETTINGS + list(extra)
     proc = subprocess.Popen(args, env=child_env(scratch), stdin=subprocess.DEVNULL,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             preexec_fn=preexec, restore_signals=preexec is None)
@@ -56,7 +66,7 @@ def gegl_save(scratch, path, size, preexec=None, wait=True, extra=()):
         _, err = proc.communicate(timeout=600)
     except subprocess.TimeoutExpired:
         proc.kill()
-        tsops.die("gegl %s did not finish within 600 s" % " ".join(args[3:]))
+        tsops.die("%s did not finish within 600 s" % " ".join(args))
     if proc.returncode < 0:
         check(False, "gegl was killed by signal %d: %s" % (-proc.returncode, err[-2000:]))
     return proc.returncode, [line.split(SAVE + ": ", 1)[1] for line in err.splitlines()
@@ -97,10 +107,13 @@ def expect_refusal(label, warnings, words, folder, before):
 
 # --- a file size limit --------------------------------------------------------
 
-def limit_file_size():
-    resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_LIMIT, FILE_LIMIT))
-    # Ignored, the signal becomes EFBIG from write(), as a quota would.
-    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+def limit_file_size(limit=FILE_LIMIT):
+    """A preexec_fn: files of the process may grow to `limit` bytes."""
+    def preexec():
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+        # Ignored, the signal becomes EFBIG from write(), as a quota would.
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    return preexec
 
 
 def file_size_limit(scratch):
@@ -112,7 +125,7 @@ def file_size_limit(scratch):
     # of 3 KB each are not: the full disk below fails them).
     for name in ("old.vol", "old.dds", "old.png"):
         code, warnings = gegl_save(scratch, os.path.join(folder, name), 32,
-                                   preexec=limit_file_size)
+                                   preexec=limit_file_size())
         expect_refusal("file size limit, %s" % name, warnings,
                        ("File too large", "did not write the whole image"), folder, before)
 
@@ -135,17 +148,39 @@ def killed_midway(scratch):
 
 # --- unwritable folders -------------------------------------------------------
 
-def unwritable_folder(scratch):
-    note("-- a folder without write permission")
+# Root writes whatever the permissions say, but not from a user namespace
+# of its own: there it has no power over the host's files, whose owner
+# (root) it stays, so their permission bits hold.
+USER_NAMESPACE = ["unshare", "--user"]
+
+
+def without_root_powers():
+    """The command prefix that makes the folder's permissions hold for
+    the gegl process, or None (root without user namespaces)."""
+    if os.geteuid() != 0:
+        return []
+    if shutil.which("unshare") and subprocess.run(USER_NAMESPACE + ["true"],
+                                                  capture_output=True).returncode == 0:
+        return USER_NAMESPACE
+    return None
+
+
+def unwritable_folder(scratch, prefix):
+    note("-- a folder without write permission%s" % (" (gegl in a user namespace)"
+                                                      if prefix else ""))
     folder = os.path.join(scratch, "unwritable")
     plant_older_files(folder)
     before = snapshot(folder)
-    os.chmod(folder, 0o555)
+    for sub in (folder, os.path.join(folder, "slices")):
+        os.chmod(sub, 0o555)
     try:
-        code, warnings = gegl_save(scratch, os.path.join(folder, "old.vol"), 8)
-        expect_refusal("unwritable folder", warnings, ("Permission denied",), folder, before)
+        for name in ("old.vol", "slices/"):
+            code, warnings = gegl_save(scratch, os.path.join(folder, name), 8, prefix=prefix)
+            expect_refusal("unwritable folder, %s" % name, warnings, ("Permission denied",),
+                           folder, before)
     finally:
-        os.chmod(folder, 0o755)
+        for sub in (folder, os.path.join(folder, "slices")):
+            os.chmod(sub, 0o755)
 
 
 # --- a full disk, then a read-only one (tmpfs in a private mount namespace) ---
@@ -175,7 +210,9 @@ def full_and_read_only_disk(scratch):
                   "full disk, %s: all the space is free again (%d bytes)" % (name, free))
 
         note("-- a read-only file system")
-        subprocess.run(["mount", "-o", "remount,ro", folder], check=True)
+        # A read-only bind of the mount, which a user namespace may make
+        # where it may not remount the tmpfs itself read-only.
+        subprocess.run(["mount", "-o", "remount,bind,ro", folder], check=True)
         for name in ("old.vol", "slices/"):
             code, warnings = gegl_save(scratch, os.path.join(folder, name), 8)
             expect_refusal("read-only file system, %s" % name, warnings,
@@ -184,23 +221,44 @@ def full_and_read_only_disk(scratch):
         subprocess.run(["umount", folder])
 
 
-def in_namespace():
-    """This script again in a private mount namespace (root only), so its
-    tmpfs vanishes with it whatever happens."""
-    if os.geteuid() != 0 or not shutil.which("unshare"):
-        note("skip  full and read-only disk: needs root (mount) and unshare")
-        return
-    probe = subprocess.run(["unshare", "--mount", "--propagation", "private", "true"],
-                           capture_output=True, text=True)
+def mount_namespace():
+    """The unshare command for a private mount namespace (in a user
+    namespace of its own when not root), or (None, why not)."""
+    if not shutil.which("unshare"):
+        return None, "unshare is not installed (Debian package util-linux)"
+    command = ["unshare", "--mount", "--propagation", "private"]
+    if os.geteuid() != 0:
+        command[1:1] = ["--user", "--map-root-user"]
+    probe = subprocess.run(command + ["true"], capture_output=True, text=True)
     if probe.returncode != 0:
-        note("skip  full and read-only disk: no mount namespace here (%s)" % probe.stderr.strip())
-        return
-    proc = subprocess.run(["unshare", "--mount", "--propagation", "private", sys.executable,
-                           os.path.abspath(__file__), NAMESPACE_FLAG],
+        return None, "%s failed: %s" % (" ".join(command), probe.stderr.strip())
+    return command, None
+
+
+def in_namespace(command):
+    """This script again in a private mount namespace, so its tmpfs
+    vanishes with it whatever happens."""
+    proc = subprocess.run(command + [sys.executable, os.path.abspath(__file__), NAMESPACE_FLAG],
                           capture_output=True, text=True, timeout=900)
     sys.stdout.write(proc.stdout)
     check(proc.returncode == 0, "the full-disk and read-only checks pass%s"
           % ("" if proc.returncode == 0 else ":\n" + proc.stderr[-3000:]))
+
+
+def full_disk_as_file_limit(scratch):
+    """Without a tmpfs: every file the saves write meets a file size
+    limit below its size, as a full disk would (EFBIG, not ENOSPC)."""
+    note("-- a full disk as a file size limit of 1 KiB (no mount namespace)")
+    folder = os.path.join(scratch, "full")
+    plant_older_files(folder)
+    before = snapshot(folder)
+    for name, extra in (("old.vol", ()), ("old.png", ()), ("slices/", ()),
+                        ("slices", ("format=png-slices",))):
+        code, warnings = gegl_save(scratch, os.path.join(folder, name), 40, extra=extra,
+                                   preexec=limit_file_size(1024))
+        expect_refusal("full disk as a file size limit, %s%s"
+                       % (name, " " + extra[0] if extra else ""), warnings,
+                       ("File too large", "did not write the whole image"), folder, before)
 
 
 def main():
@@ -213,10 +271,24 @@ def main():
         tsops.finish()
     file_size_limit(scratch)
     killed_midway(scratch)
-    if os.geteuid() != 0:  # root writes whatever the permissions say
-        unwritable_folder(scratch)
-    in_namespace()
-    tsops.finish()
+    not_made = []
+    prefix = without_root_powers()
+    if prefix is not None:
+        unwritable_folder(scratch, prefix)
+    else:
+        not_made.append("the unwritable folder: root writes through its permissions and "
+                        "cannot make a user namespace here")
+    command, why = mount_namespace()
+    if command:
+        in_namespace(command)
+    else:
+        note("no mount namespace (%s)%s" % (why, "" if prefix is None else
+                                             ": the unwritable folder stands for a read-only "
+                                             "file system"))
+        full_disk_as_file_limit(scratch)
+        if prefix is None:
+            not_made.append("the read-only file system: no mount namespace (%s)" % why)
+    tsops.finish(skipped="; ".join(not_made))
 
 
 if __name__ == "__main__":
