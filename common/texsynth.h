@@ -19,7 +19,10 @@
 extern "C" {
 #endif
 
+/* Floats per pixel: three colour channels and alpha. */
 #define TS_CHANNELS 4
+/* Ranges the parameters are checked against. An output of the largest
+ * side already holds 4 GiB of floats. */
 #define TS_MAX_OUTPUT_SIDE 16384
 #define TS_MIN_QUALITY 1
 #define TS_MAX_QUALITY 10
@@ -226,6 +229,8 @@ typedef enum
   TS_AXIS_Z
 } TsAxis;
 
+/* Range of a solid's edge: a smaller cube holds too little texture to
+ * be of use; 1024^3 voxels already take 16 GiB of working values. */
 #define TS_SOLID_MIN_SIZE 8
 #define TS_SOLID_MAX_SIZE 1024
 
@@ -361,6 +366,7 @@ typedef enum
   TS_HEAL_ABOVE_BELOW      /* only above and below the hole's bounds        */
 } TsHealSampleFrom;
 
+/* Largest context: as wide as the largest output side (16384). */
 #define TS_HEAL_MAX_CONTEXT 16384
 
 typedef struct

@@ -8,6 +8,8 @@
 #include "pyramid.h"
 #include "ssd.h"
 
+/* Most principal axes a feature keeps: bounds the fixed-size sums in
+ * the projection. */
 #define MAX_PCA 32
 
 typedef struct

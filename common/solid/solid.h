@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
+/* Slice orientations, one per axis of the cube. */
 #define TS_SOLID_AXES 3
 /* Kopf et al. 2007 use 16 bins per channel. */
 #define TS_SOLID_HISTOGRAM_BINS 16
