@@ -113,8 +113,11 @@ def last_values(cell_structure):
     return data if cell_structure is None else data + struct.pack("<i", cell_structure)
 
 
-has_solid_ops = all(gimpbatch.gegl_has(op) for op in ("texsynth:volume-save",
-                                                       "texsynth:volume-slice"))
+# The Solid Texture procedure runs both ops: without them its checks
+# below fail too, this one says why.
+for solid_op in ("texsynth:volume-save", "texsynth:volume-slice"):
+    tsops.check(gimpbatch.gegl_has(solid_op), "gegl finds %s (GEGL_PATH=%s)"
+                % (solid_op, os.environ.get("GEGL_PATH", "<unset>")))
 
 batch = [
     # Precision and size: a 16-bit exemplar gives a 16-bit image.
@@ -140,23 +143,22 @@ errors = [
     sf.call_solid("badpath", bark, 16, "/nonexistent-folder/v.vol", 1, 1),
     sf.call_solid("badformat", bark, 16, os.path.join(work, "v.txt"), 1, 1),
 ]
-if has_solid_ops:
-    batch.append(sf.solid_report("solid", bark, 16, volume, 1, 2))
-    for (tag, path, save), cells in zip(CELL_RUNS, (CELLS_OFF, CELLS_ON, CELLS_AUTO)):
-        batch.append(sf.solid_report(tag, stones, CELLS_SIZE, path, 1, 4, cells, save=save))
-    # Automatic on transparent corners: not refused as "on" is (the
-    # engine leaves the cell structure off).
-    batch.append(sf.solid_report("autoalpha", brick_rgba, 16, os.path.join(work, "auto-a.vol"),
-                                 1, 1, CELLS_AUTO))
-    if gimp.version == 2:
-        batch += [sf.solid_last_values_report(tag, stones, last_values(cells), save)
-                  for tag, cells, save, _ in LAST_VALUES]
-    # Transparent corners with the cell structure on: refused with a
-    # reason before anything runs.
-    errors.append(sf.call_solid("cellsalpha", brick_rgba, 16, os.path.join(work, "a.vol"), 1, 1,
-                                CELLS_ON))
-    # No fourth choice.
-    errors.append(sf.call_solid("badcells", stones, 16, os.path.join(work, "b.vol"), 1, 1, 3))
+batch.append(sf.solid_report("solid", bark, 16, volume, 1, 2))
+for (tag, path, save), cells in zip(CELL_RUNS, (CELLS_OFF, CELLS_ON, CELLS_AUTO)):
+    batch.append(sf.solid_report(tag, stones, CELLS_SIZE, path, 1, 4, cells, save=save))
+# Automatic on transparent corners: not refused as "on" is (the engine
+# leaves the cell structure off).
+batch.append(sf.solid_report("autoalpha", brick_rgba, 16, os.path.join(work, "auto-a.vol"),
+                             1, 1, CELLS_AUTO))
+if gimp.version == 2:
+    batch += [sf.solid_last_values_report(tag, stones, last_values(cells), save)
+              for tag, cells, save, _ in LAST_VALUES]
+# Transparent corners with the cell structure on: refused with a reason
+# before anything runs.
+errors.append(sf.call_solid("cellsalpha", brick_rgba, 16, os.path.join(work, "a.vol"), 1, 1,
+                            CELLS_ON))
+# No fourth choice.
+errors.append(sf.call_solid("badcells", stones, 16, os.path.join(work, "b.vol"), 1, 1, 3))
 if gimp.version >= 3:
     batch.append(sf.filter_report("filter", brick))
 
@@ -297,26 +299,21 @@ calling_error("badwidth", r"width must be between 1 and 16384|argument 4 .*value
 calling_error("badquality", r"[Qq]uality must be between 1 and 10|argument 7 .*value 11 out of range: 1 to 10")
 calling_error("badpath", r"folder \"/nonexistent-folder\" does not exist")
 calling_error("badformat", r"must end in \.vol, \.dds or \.png")
-if has_solid_ops:
-    text = gimp.error_text(lines, "cellsalpha")
-    tsops.check(text is not None and "needs an opaque exemplar" in text,
-                "cell structure on a layer with transparent pixels: an error saying why (%r)"
-                % text)
-    # GIMP 3's Script-Fu checks the range itself (cell-structure is the 8th).
-    calling_error("badcells", r"[Cc]ell structure must be 0 \(off\), 1 \(on\) or 2 "
-                  r"\(automatic\) \(got 3\)|argument 8 .*value 3 out of range: 0 to 2")
+text = gimp.error_text(lines, "cellsalpha")
+tsops.check(text is not None and "needs an opaque exemplar" in text,
+            "cell structure on a layer with transparent pixels: an error saying why (%r)" % text)
+# GIMP 3's Script-Fu checks the range itself (cell-structure is the 8th).
+calling_error("badcells", r"[Cc]ell structure must be 0 \(off\), 1 \(on\) or 2 "
+              r"\(automatic\) \(got 3\)|argument 8 .*value 3 out of range: 0 to 2")
 
-if has_solid_ops:
-    r = fields(lines, "TSRESULT solid")
-    if tsops.check(r is not None, "solid: returns an image"):
-        w, h, layers = map(int, r[:3])
-        tsops.check((w, h, layers) == (16, 16, 3), "solid: three 16x16 slices (got %dx%d, %d)"
-                    % (w, h, layers))
-    size = os.path.getsize(volume) if os.path.isfile(volume) else 0
-    tsops.check(size >= 16 ** 3 * 4, "solid: the volume file was written (%d bytes)" % size)
-    check_cell_structure()
-else:
-    tsops.note("SKIP  solid: texsynth:volume-save / texsynth:volume-slice are not built yet")
+r = fields(lines, "TSRESULT solid")
+if tsops.check(r is not None, "solid: returns an image"):
+    w, h, layers = map(int, r[:3])
+    tsops.check((w, h, layers) == (16, 16, 3), "solid: three 16x16 slices (got %dx%d, %d)"
+                % (w, h, layers))
+size = os.path.getsize(volume) if os.path.isfile(volume) else 0
+tsops.check(size >= 16 ** 3 * 4, "solid: the volume file was written (%d bytes)" % size)
+check_cell_structure()
 
 if gimp.version >= 3:
     r = fields(lines, "TSRESULT filter")
