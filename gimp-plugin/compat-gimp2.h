@@ -1,6 +1,6 @@
-/* GIMP 2.10 glue shared by its files: a procedure's outcome, reading
- * layers and making images, the heal procedures (heal-gimp2.c) and the
- * material-set procedure (layers-gimp2.c).
+/* GIMP 2.10 glue shared by its procedures (main-gimp2.c, heal-gimp2.c,
+ * layers-gimp2.c): a procedure's outcome, reading layers and making
+ * images.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #ifndef TEXSYNTH_COMPAT_GIMP2_H
@@ -35,13 +35,5 @@ gboolean read_exemplar (gint32 drawable, gboolean crop_to_selection, TsExemplar 
  * whether layer i has alpha (NULL: as the exemplar). -1 on failure. */
 gint32 new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
                   const gboolean *alphas, gint n);
-
-/* plug-in-texsynth-render-layers. */
-gboolean ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params,
-                         Outcome *outcome);
-
-/* plug-in-texsynth-heal-selection, -heal-transparency and -uncrop. */
-gboolean ts_run_heal2 (const gchar *name, GimpRunMode mode, const GimpParam *params,
-                       gint n_params, Outcome *outcome);
 
 #endif /* TEXSYNTH_COMPAT_GIMP2_H */

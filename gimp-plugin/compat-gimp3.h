@@ -1,5 +1,6 @@
-/* GIMP 3 glue shared by its files (compat-gimp3.c, heal-gimp3.c,
- * layers-gimp3.c).
+/* GIMP 3 glue shared by its procedures (main-gimp3.c, heal-gimp3.c,
+ * layers-gimp3.c): a run's return values, the drawables' checks, reading
+ * layers and making images.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #ifndef TEXSYNTH_COMPAT_GIMP3_H
@@ -11,6 +12,9 @@
 
 /* The return values of a failed run, with `message` (taken; may be NULL). */
 GimpValueArray *failure (GimpProcedure *procedure, GimpPDBStatusType status, gchar *message);
+
+/* How many drawables the NULL-terminated `drawables` holds (0 if NULL). */
+gint count_drawables (GimpDrawable **drawables);
 
 /* Checks common to all procedures: one to `max` layers, the ops found;
  * NULL if fine, else a message. */
@@ -31,15 +35,5 @@ GimpImage *new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gch
 /* An interactive run's result: shown, and returned as the new image. */
 GimpValueArray *success_with_image (GimpProcedure *procedure, GimpRunMode mode,
                                     GimpImage *image);
-
-/* plug-in-texsynth-render-layers. */
-GimpValueArray *ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
-                                GimpDrawable **drawables, GimpProcedureConfig *config,
-                                gpointer data);
-
-/* plug-in-texsynth-heal-selection, -heal-transparency and -uncrop. */
-GimpValueArray *ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
-                              GimpDrawable **drawables, GimpProcedureConfig *config,
-                              gpointer data);
 
 #endif /* TEXSYNTH_COMPAT_GIMP3_H */

@@ -4,6 +4,7 @@
  */
 #include <glib/gi18n-lib.h>
 
+#include "heal-gimp3.h"
 #include "compat-gimp3.h"
 #include "dialogs-gimp3.h"
 

@@ -4,6 +4,7 @@
  */
 #include <glib/gi18n-lib.h>
 
+#include "layers-gimp2.h"
 #include "compat-gimp2.h"
 #include "dialogs-gimp2.h"
 

@@ -4,6 +4,7 @@
  */
 #include <glib/gi18n-lib.h>
 
+#include "layers-gimp3.h"
 #include "compat-gimp3.h"
 #include "dialogs-gimp3.h"
 

@@ -1,6 +1,6 @@
-/* Window grids (gather, SSD) and their PCA basis, for patch-search.c.
+/* Window grids (gather, SSD) and their PCA basis.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
-#include "patch-search.h"
+#include "window-grid.h"
 
 #include <math.h>
 #include <stdint.h>
