@@ -124,8 +124,8 @@ vote_weights (const TsHealLevel *l)
  * add up, so the pixel joins the copy most of its neighbourhood shows (a
  * real pixel, where a mean of disagreeing proposals would blur, and more
  * whole copies than the single best-weighted patch gives). Ties go to
- * the first in
- * raster order, so the choice is the same at any thread count. */
+ * the first in raster order, so the choice is the same at any thread
+ * count. */
 static int32_t
 best_proposal (const TsHealLevel *l, const float *weight, size_t x, size_t y)
 {
