@@ -23,8 +23,9 @@ typedef struct
   double sigma;       /* the field's standard deviation */
 } Field;
 
-/* Random wave vectors of `periods_lo` to `periods_hi` periods across the
- * cube (a feature size of n / periods voxels), amplitude ~ periods^-decay. */
+/* WAVES plane waves in random directions, of wavelengths drawn between
+ * `wavelength_lo` and `wavelength_hi` voxels (rounded to whole periods
+ * across the cube), amplitude ~ (periods across the cube)^-decay. */
 static void
 field_init (Field *f, const TruthSolid *s, uint32_t stream, double wavelength_lo, double wavelength_hi,
             double decay)
@@ -110,7 +111,8 @@ mix (double out[3], const double a[3], const double b[3], double t)
     out[c] = a[c] + t * (b[c] - a[c]);
 }
 
-/* The standard normal's quantiles used as thresholds. */
+/* Thresholds below which 35 % and a third of a Gaussian field lie (in
+ * standard deviations): the sponge's pores, threephase's dark phase. */
 #define QUANTILE_35 (-0.3853)
 #define QUANTILE_33 (-0.4307)
 

@@ -336,6 +336,7 @@ static const Kind kinds[] = {
 /* Pieces that failed to find room in a row before a kind stops filling. */
 #define JAMMED 50
 
+/* A ball's volume. */
 static double
 piece_volume (const Piece *piece)
 {
@@ -349,7 +350,8 @@ by_radius_descending (const void *a, const void *b)
   return ra < rb ? 1 : ra > rb ? -1 : 0;
 }
 
-/* Draws and places the pieces until they fill kind->fill of the cube. */
+/* Draws and places the pieces until they fill kind->fill of the cube, or
+ * until separate pieces no longer find room. */
 static bool
 fill (Pack *pack, const TruthSolid *s, const Kind *kind)
 {
