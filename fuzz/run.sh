@@ -5,11 +5,15 @@
 # coverage. Exits non-zero if a target finds a crash, leak or timeout; the
 # input is saved in build-fuzz/artifacts/ (turn it into a regression test).
 #
-#   fuzz/run.sh [SECONDS_PER_TARGET]     (default 60)
+#   fuzz/run.sh [SECONDS_PER_TARGET]     (default 30, what CI runs)
+#   fuzz/run.sh 600                      a longer search, ten minutes a target
+#
+# The scratch corpus in build-fuzz/ is kept between runs, so each run goes
+# on from what the previous ones found.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-60}
+seconds=${1:-30}
 
 [ -f build-fuzz/build.ninja ] ||
   CC=clang meson setup build-fuzz -Dfuzzing=true -Dopenmp=disabled -Doperations=disabled \

@@ -18,6 +18,14 @@ test_finish (const char *name)
   return ts_test_failures ? 1 : 0;
 }
 
+bool
+test_small (void)
+{
+  const char *value = getenv ("TEXSYNTH_TEST_SMALL");
+
+  return value && *value && strcmp (value, "0") != 0;
+}
+
 void
 test_load_exemplar (const char *name, TsImage *image)
 {

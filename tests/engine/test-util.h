@@ -4,6 +4,7 @@
 
 #include "texsynth.h"
 
+#include <stdbool.h>
 #include <stdio.h>
 
 /* Sanitizer builds (scripts/sanitize.sh): the engine runs several times
@@ -16,6 +17,12 @@
 #define TEST_SANITIZED 1
 #endif
 #endif
+
+/* Small-size runs (TEXSYNTH_TEST_SMALL set and not "0"; scripts/sanitize.sh
+ * sets it): tests run their engines on small sizes and one seed, to reach
+ * the same code in a fraction of the time, and leave quality thresholds,
+ * which hold only at full size, to the native run. */
+bool test_small (void);
 
 extern int ts_test_failures;
 
