@@ -473,7 +473,8 @@ ts_solid_cell_guide_apply (const TsSolidCellGuide *g, float *value, int axis)
 {
   size_t voxels = g->field_edge * g->field_edge * g->field_edge;
   GuideCode code = g->slant ? FINEST_CODE : COARSE_CODE;
-  /* Three times an iteration at the finest level: alone, 1 s of 30. */
+  /* Runs three times per finest iteration, about 1 s of a 30 s 128^3
+   * run: worth spreading over the threads. */
 #pragma omp parallel for schedule(static) if (g->field_edge >= TS_SOLID_PARALLEL_EDGE)
   for (size_t i = 0; i < voxels; i++)
     {

@@ -1,5 +1,8 @@
 /* Solid synthesis internals: the state of one level of the volume, its
  * M-step and E-step, and Kopf et al.'s histogram matching (internal).
+ * "The truth solids" in this folder's comments are the ground-truth
+ * cells, blobs and grains of benchmarks/truth-solids.h, whose slices are
+ * known: the constants chosen on them are tuned to those kinds.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #ifndef TS_SOLID_H
 #define TS_SOLID_H
