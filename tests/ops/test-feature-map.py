@@ -21,7 +21,7 @@ args = parser.parse_args()
 tsops.require_op()
 Gegl = tsops.gegl()
 work = tsops.workdir()
-SIDE = 128
+SIDE = 64 if tsops.small() else 128
 
 
 albedo, height = os.path.join(work, "albedo.png"), os.path.join(work, "height.png")
@@ -48,19 +48,24 @@ def laid_out_height(seed, weight):
 
 
 note("-- the height map laid out with and without it in the match")
-figures = {}
-for weight in (None, 1.0):
-    values = [tsops.run_measure(args.measure, height, laid_out_height(seed, weight))["coherence"]
-              for seed in (1, 2)]
-    figures[weight] = statistics.median(values)
-    note("      feature weight %s: height coherence %s, median %.3f"
-         % (weight, ", ".join("%.3f" % v for v in values), figures[weight]))
-# Measured: 3.28 without, 1.50 with (128x128, seeds 1-2); 3.3 and 1.27 at 192x192
-# (seeds 1-3, benchmarks/feature-match.py).
-check(figures[1.0] < 0.6 * figures[None],
-      "with the height map in the match its layout is far more coherent: %.3f < 0.6 x %.3f"
-      % (figures[1.0], figures[None]))
-check(figures[1.0] < 1.8, "height coherence with features %.3f < 1.8" % figures[1.0])
+if tsops.small():
+    for weight in (None, 1.0):
+        laid_out_height(1, weight)
+    note("      small-size run: both layouts made, their coherence left to the native run")
+else:
+    figures = {}
+    for weight in (None, 1.0):
+        values = [tsops.run_measure(args.measure, height, laid_out_height(seed, weight))["coherence"]
+                  for seed in (1, 2)]
+        figures[weight] = statistics.median(values)
+        note("      feature weight %s: height coherence %s, median %.3f"
+             % (weight, ", ".join("%.3f" % v for v in values), figures[weight]))
+    # Measured: 3.28 without, 1.50 with (128x128, seeds 1-2); 3.3 and 1.27 at 192x192
+    # (seeds 1-3, benchmarks/feature-match.py).
+    check(figures[1.0] < 0.6 * figures[None],
+          "with the height map in the match its layout is far more coherent: %.3f < 0.6 x %.3f"
+          % (figures[1.0], figures[None]))
+    check(figures[1.0] < 1.8, "height coherence with features %.3f < 1.8" % figures[1.0])
 
 note("-- the same seed, the same result")
 a = tsops.load_bytes(laid_out_height(3, 1.0), "R'G'B'A u16")

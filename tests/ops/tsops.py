@@ -48,6 +48,14 @@ def finish(skipped=""):
     sys.exit(0)
 
 
+def small():
+    """True in small-size runs (TEXSYNTH_TEST_SMALL set and not "0";
+    scripts/sanitize.sh sets it): the tests reach the same op code on less
+    work and leave quality thresholds, and their measuring, to the native
+    run."""
+    return os.environ.get("TEXSYNTH_TEST_SMALL", "") not in ("", "0")
+
+
 def die(message):
     note("ERROR: " + message)
     sys.exit(1)
