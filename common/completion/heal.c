@@ -5,6 +5,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "heal-level.h"
 #include "engine/error.h"
+#include "engine/progress.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -28,26 +29,15 @@
 
 typedef struct
 {
-  TsProgressFunc progress;
-  void          *user_data;
-  double         done, total;
-  TsCancel       cancel;
+  TsProgress progress;
+  TsCancel   cancel;
 } Run;
-
-static bool
-report (Run *run, double units, const char *stage)
-{
-  run->done += units;
-  if (!run->progress)
-    return true;
-  return run->progress (run->total > 0 ? (run->done < run->total ? run->done / run->total : 1.0)
-                                       : 1.0, stage, run->user_data);
-}
 
 static bool
 report_midway (void *data)
 {
-  return report (data, 0.0, "healing");
+  Run *run = data;
+  return ts_progress_report (&run->progress, 0.0, "healing");
 }
 
 static size_t
@@ -136,11 +126,11 @@ optimize_level (const TsHealParams *params, Run *run, TsHealLevel *l, size_t lev
         return TS_ERROR_OUT_OF_MEMORY;
       ts_heal_update_distances (l, &run->cancel);
       if (ts_cancel_requested (&run->cancel) ||
-          !report (run, (double) l->active_count, "healing"))
+          !ts_progress_report (&run->progress, (double) l->active_count, "healing"))
         return TS_ERROR_CANCELLED;
       if (it >= 1 && (double) changed < TS_HEAL_CONVERGED * (double) l->hole_pixels)
         {
-          run->done += (double) (iterations - it - 1) * (double) l->active_count;
+          run->progress.done += (double) (iterations - it - 1) * (double) l->active_count;
           break;
         }
     }
@@ -155,7 +145,8 @@ run_levels (const TsHealParams *params, Run *run, TsHealLevel *levels, size_t co
   TsStatus status = TS_OK;
 
   for (size_t l = 0; l < count; l++)
-    run->total += (double) iterations_for (params, l, count) * (double) levels[l].active_count;
+    run->progress.total += (double) iterations_for (params, l, count)
+                           * (double) levels[l].active_count;
   for (size_t l = count; l-- > 0 && status == TS_OK;)
     {
       TsHealLevel *level = &levels[l];
@@ -219,7 +210,7 @@ ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
          const TsImage *source, TsImage *output, int32_t *source_map, TsProgressFunc progress,
          void *user_data, TsError *error)
 {
-  Run run = { .progress = progress, .user_data = user_data };
+  Run run = { .progress = { .func = progress, .user_data = user_data } };
   TsHealLevel levels[TS_HEAL_MAX_LEVELS];
   TsHealArea area;
   TsHealCrop crop;
@@ -271,7 +262,7 @@ ts_heal (const TsHealParams *params, const TsImage *image, const uint8_t *hole,
   if (status == TS_OK)
     {
       write_result (image, source, &levels[0], &crop, picked, offset, output, source_map);
-      report (&run, 0.0, "done");
+      ts_progress_report (&run.progress, 0.0, "done");
     }
   for (size_t l = 0; l < TS_HEAL_MAX_LEVELS; l++)
     ts_heal_level_free (&levels[l]);

@@ -4,6 +4,7 @@
 #include "level.h"
 #include "occurrence.h"
 #include "seam-placement.h"
+#include "progress.h"
 #include "rng.h"
 #include "error.h"
 
@@ -25,29 +26,17 @@
 typedef struct
 {
   const TsParams *params;
-  TsProgressFunc  progress;
-  void           *user_data;
-  double          done, total;   /* work units, for the progress fraction */
+  TsProgress      progress;
   TsCancel        cancel;        /* lets the steps ask `progress` midway    */
   const char     *stage;         /* what a midway report says             */
 } Run;
-
-static bool
-report (Run *run, double units, const char *stage)
-{
-  run->done += units;
-  if (!run->progress)
-    return true;
-  return run->progress (run->total > 0 ? fmin (1.0, run->done / run->total) : 1.0, stage,
-                        run->user_data);
-}
 
 /* Asked by OpenMP thread 0 (the caller's thread) from inside the steps. */
 static bool
 report_midway (void *data)
 {
   Run *run = data;
-  return report (run, 0.0, run->stage);
+  return ts_progress_report (&run->progress, 0.0, run->stage);
 }
 
 static size_t
@@ -257,7 +246,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
                            : TS_ERROR_OUT_OF_MEMORY;
           /* An iteration of a large level takes long: a cancel between
            * its two steps halves the wait. */
-          if (status == TS_OK && !report (run, 0.0, "optimizing"))
+          if (status == TS_OK && !ts_progress_report (&run->progress, 0.0, "optimizing"))
             status = TS_ERROR_CANCELLED;
           if (status == TS_OK)
             {
@@ -272,7 +261,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
           ts_axis_grid_free (&gy);
           if (status != TS_OK)
             break;
-          if (!report (run, (double) pixels, "optimizing"))
+          if (!ts_progress_report (&run->progress, (double) pixels, "optimizing"))
             {
               status = TS_ERROR_CANCELLED;
               break;
@@ -284,7 +273,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
             }
         }
       /* Credit the iterations convergence made unnecessary. */
-      run->done += (double) (pass->max_iterations - it) * (double) pixels;
+      run->progress.done += (double) (pass->max_iterations - it) * (double) pixels;
     }
   if (histogram)
     ts_histogram_free (histogram);
@@ -382,8 +371,9 @@ synthesize_level (Run *run, Work *w, size_t level)
   if (status != TS_OK)
     return status;
   ts_candidate_set_free (&w->coarser_candidates);
-  if (!report (run, (double) level_side (params->output_width, level) *
-               (double) level_side (params->output_height, level), "matching exemplar"))
+  if (!ts_progress_report (&run->progress, (double) level_side (params->output_width, level) *
+                           (double) level_side (params->output_height, level),
+                           "matching exemplar"))
     return TS_ERROR_CANCELLED;
   run->stage = "optimizing";
 
@@ -467,7 +457,7 @@ TsStatus
 ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
                TsProgressFunc progress, void *user_data, TsError *error)
 {
-  Run run = { .params = params, .progress = progress, .user_data = user_data,
+  Run run = { .params = params, .progress = { .func = progress, .user_data = user_data },
              .stage = "matching exemplar" };
   Work w;
   TsStatus status;
@@ -489,14 +479,14 @@ ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
     status = ts_pyramid_build (&w.working, ts_schedule_levels (exemplar), &w.pyramid);
   if (status == TS_OK)
     {
-      run.total = planned_work (params, &w.pyramid);
+      run.progress.total = planned_work (params, &w.pyramid);
       for (size_t l = w.pyramid.levels; l-- > 0 && status == TS_OK;)
         status = synthesize_level (&run, &w, l);
     }
   if (status == TS_OK)
     {
       write_result (params, &w, output);
-      report (&run, 0, "done");
+      ts_progress_report (&run.progress, 0, "done");
     }
   work_free (&w);
   if (status != TS_OK)

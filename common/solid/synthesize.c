@@ -5,6 +5,7 @@
  * matching.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
+#include "engine/progress.h"
 #include "engine/pyramid.h"
 #include "engine/rng.h"
 #include "engine/error.h"
@@ -54,9 +55,7 @@ typedef struct
 typedef struct
 {
   const TsSolidParams *params;
-  TsProgressFunc       progress;
-  void                *user_data;
-  double               done, total;
+  TsProgress           progress;
   TsCancel             midway;  /* raised by a stop; lets the steps ask midway */
   const char          *stage;   /* what a midway report says */
   Exemplar             exemplar[TS_SOLID_AXES];
@@ -74,12 +73,11 @@ typedef struct
                                        more than one level */
 } Run;
 
+/* A stop asked by the caller also stops the steps still running. */
 static bool
 report (Run *run, double units, const char *stage)
 {
-  run->done += units;
-  if (run->progress && !run->progress (run->total > 0 ? fmin (1.0, run->done / run->total) : 1.0,
-                                       stage, run->user_data))
+  if (!ts_progress_report (&run->progress, units, stage))
     ts_cancel_request (&run->midway);
   return !ts_cancel_requested (&run->midway);
 }
@@ -477,7 +475,7 @@ optimize_level (Run *run, size_t level, const TsLevelPlan *plan)
             }
         }
       /* Credit the iterations convergence made unnecessary. */
-      run->done += (double) (pass->max_iterations - it) * (double) voxels;
+      run->progress.done += (double) (pass->max_iterations - it) * (double) voxels;
     }
   if (status == TS_OK && level == 0)
     status = ts_solid_remove_specks (&run->level);
@@ -549,15 +547,15 @@ ts_synthesize_solid_with_sources (const TsSolidParams *params, const TsImage *co
   run.mirrored_axis = -1;
   run.sources = sources;
   run.params = params;
-  run.progress = progress;
-  run.user_data = user_data;
+  run.progress.func = progress;
+  run.progress.user_data = user_data;
   run.volume = volume;
   run.stage = "matching exemplar";
   ts_cancel_init (&run.midway, progress ? report_midway : NULL, &run);
   status = prepare_exemplars (&run, exemplars);
   if (status == TS_OK)
     {
-      run.total = planned_work (&run);
+      run.progress.total = planned_work (&run);
       for (size_t l = run.levels; l-- > 0 && status == TS_OK;)
         status = synthesize_level (&run, l);
     }
