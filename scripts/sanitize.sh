@@ -4,7 +4,8 @@
 #   scripts/sanitize.sh asan      AddressSanitizer + UBSan build in build-asan/ (gcc),
 #                                 the test suite on small sizes
 #   scripts/sanitize.sh valgrind  valgrind memcheck (leaks too) on the ops inside the
-#                                 uninstrumented gegl tool, build/
+#                                 uninstrumented gegl tool, build/ (or
+#                                 $TEXSYNTH_NATIVE_BUILD)
 #   scripts/sanitize.sh tsan      ThreadSanitizer build in build-tsan/ (clang with
 #                                 LLVM's libomp and its Archer tool), the 'concurrency' suite
 #   scripts/sanitize.sh all       the three in turn (the default)
@@ -55,13 +56,15 @@ run_asan() {
   # test (its exact nearest-neighbour search); test-metrics covers the
   # measures.
   # Left out as adding no C coverage for their time: ops-babl-paths (the
-  # ops-gi runs again under other babl tolerances) and test-volume-periodic
-  # (volume-slice's code, measured). GIMP runs its plug-ins (ghostscript's
+  # ops-gi runs again under other babl tolerances), test-volume-periodic
+  # (volume-slice's code, measured), and the tests that run no C code of
+  # ours: the 'layout' suite and i18n-catalogues. GIMP runs its plug-ins (ghostscript's
   # file-ps too) with ASan preloaded and hangs: the 'gimp' suite skips
   # itself under sanitizers, and is left out here for the tests that do not.
   local tests
   tests=$(meson test -C build-asan --list --no-suite quality --no-suite measure --no-suite gimp \
-            2> /dev/null | sed -n 's|^.* / ||p' | grep -Ev '^(ops-babl-paths|test-volume-periodic)$')
+            --no-suite layout 2> /dev/null | sed -n 's|^.* / ||p' |
+          grep -Ev '^(ops-babl-paths|test-volume-periodic|i18n-catalogues)$')
   export TEXSYNTH_TEST_SMALL=1
   export ASAN_OPTIONS="abort_on_error=1:halt_on_error=1:detect_leaks=1:fast_unwind_on_malloc=0:detect_stack_use_after_return=1"
   export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
@@ -77,9 +80,10 @@ run_asan() {
 # as it is installed (uninstrumented GEGL, GLib and babl around them), and
 # reads of uninitialised memory, which ASan does not track.
 run_valgrind() {
-  echo "== valgrind memcheck (build/, the ops in the gegl tool)"
-  [ -f build/build.ninja ] || meson setup build
-  ninja -C build
+  local native=${TEXSYNTH_NATIVE_BUILD:-build}
+  echo "== valgrind memcheck ($native/, the ops in the gegl tool)"
+  [ -f "$native/build.ninja" ] || meson setup "$native"
+  ninja -C "$native"
   local log; log=$(mktemp)
   export OMP_NUM_THREADS=2
   # GEGL loads every module at start-up; ffmpeg's (ff-load, ff-save) pull
@@ -89,7 +93,7 @@ run_valgrind() {
   for m in "$(pkg-config --variable=pluginsdir gegl-0.4)"/*; do
     case $(basename "$m") in ff-*) ;; *) ln -s "$m" "$modules/" ;; esac
   done
-  export GEGL_PATH="$root/build/operations:$modules"
+  export GEGL_PATH="$root/$native/operations:$modules"
   # The ops inside the gegl tool: GEGL and GLib keep some memory until exit,
   # so only leak records with one of our frames count.
   # The volume ops write and read a real file (8^3), then a PNG as a volume.

@@ -122,6 +122,8 @@ for tex in healcases.TEXTURES:
               "%s %s: every pixel outside the hole is bit-identical (16-bit RGB)" % (tex, hole_name))
         check(changed_inside(before, after, hole) > 0.5 * sum(hole),
               "%s %s: the hole was filled" % (tex, hole_name))
+        if tsops.small():
+            continue
         m = measure(src, masks[hole_name], dst)
         note("      %s %s: fill_bds %.2f boundary %.3f (original %.3f) sharpness %.3f"
              % (tex, hole_name, m["fill_bds"], m["boundary"], m["boundary_original"],
@@ -133,15 +135,18 @@ for tex in healcases.TEXTURES:
               % (tex, hole_name, m["boundary"], limit))
         figures.append(m)
 
-med = {k: healcases.median([m[k] for m in figures]) for k in ("fill_bds", "boundary", "sharpness")}
-note("      medians: fill_bds %.2f boundary %.3f sharpness %.3f"
-     % (med["fill_bds"], med["boundary"], med["sharpness"]))
-check(med["boundary"] <= BOUNDARY_MEDIAN_MAX, "median boundary %.3f <= %.2f"
-      % (med["boundary"], BOUNDARY_MEDIAN_MAX))
-check(med["sharpness"] >= SHARPNESS_MEDIAN_MIN, "median fill sharpness %.3f >= %.2f"
-      % (med["sharpness"], SHARPNESS_MEDIAN_MIN))
-check(med["fill_bds"] <= FILL_BDS_MEDIAN_MAX, "median fill_bds %.2f <= %.1f"
-      % (med["fill_bds"], FILL_BDS_MEDIAN_MAX))
+if tsops.small():
+    note("      small-size run: the cases' quality is not measured here")
+else:
+    med = {k: healcases.median([m[k] for m in figures]) for k in ("fill_bds", "boundary", "sharpness")}
+    note("      medians: fill_bds %.2f boundary %.3f sharpness %.3f"
+         % (med["fill_bds"], med["boundary"], med["sharpness"]))
+    check(med["boundary"] <= BOUNDARY_MEDIAN_MAX, "median boundary %.3f <= %.2f"
+          % (med["boundary"], BOUNDARY_MEDIAN_MAX))
+    check(med["sharpness"] >= SHARPNESS_MEDIAN_MIN, "median fill sharpness %.3f >= %.2f"
+          % (med["sharpness"], SHARPNESS_MEDIAN_MIN))
+    check(med["fill_bds"] <= FILL_BDS_MEDIAN_MAX, "median fill_bds %.2f <= %.1f"
+          % (med["fill_bds"], FILL_BDS_MEDIAN_MAX))
 
 # Same seed, same result at 1 and 2 threads (two processes each).
 brick = path("brick.png")

@@ -44,16 +44,19 @@ check((wt, ht) == (160, 128) and not warnings, "tileable=true gives 160x128 with
 # One image's wrap-around edge may fall on a natural edge (mortar), so
 # compare averages over a few exemplars; the quality test measures seams
 # properly.
+# A small-size run makes one pair and leaves the comparison to the native run.
 seams = {True: [], False: []}
-for name in ("brick", "wood1", "granite1", "java"):
+for name in ("brick",) if tsops.small() else ("brick", "wood1", "granite1", "java"):
     for tileable in (True, False):
         (sw, sh, s), _ = synth(tsops.exemplar(name + ".png"), "seam.png", width=128, height=96,
                                seed=7, tileable=tileable)
         seams[tileable].append(max(tsops.wrap_seam_excess(sw, sh, s)))
 mean_t, mean_p = (sum(seams[k]) / len(seams[k]) for k in (True, False))
-check(mean_t <= 1.2 and mean_t + 0.2 <= mean_p,
-      "wrap-around edges: tileable step %.2f (<= 1.2) vs plain %.2f, in multiples of the "
-      "90th percentile of inner boundaries" % (mean_t, mean_p))
+note("      wrap-around edges: tileable step %.2f, plain %.2f" % (mean_t, mean_p))
+if not tsops.small():
+    check(mean_t <= 1.2 and mean_t + 0.2 <= mean_p,
+          "wrap-around edges: tileable step %.2f (<= 1.2) vs plain %.2f, in multiples of the "
+          "90th percentile of inner boundaries" % (mean_t, mean_p))
 
 note("-- input formats")
 formats = [
