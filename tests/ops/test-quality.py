@@ -4,7 +4,9 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 #
 # Usage: test-quality.py [--measure PATH] [--size N] [--seed N] [--keep DIR]
-#                        [--only NAME,...]
+#                        [--only NAME,...] [--set PROPERTY=VALUE ...]
+# (--seed and --set measure the bounds below: the spread over seeds, and a
+# worse engine, e.g. --set iterations=1.)
 
 import argparse
 import glob
@@ -33,6 +35,8 @@ parser.add_argument("--size", type=int, default=256)
 parser.add_argument("--seed", type=int, default=1)
 parser.add_argument("--keep", help="keep the results in this folder")
 parser.add_argument("--only", help="comma-separated exemplar names (without .png)")
+parser.add_argument("--set", action="append", default=[], metavar="PROPERTY=VALUE",
+                    help="another property of the op for every synthesis")
 args = parser.parse_args()
 
 if not args.measure or not os.access(args.measure, os.X_OK):
@@ -49,6 +53,9 @@ if not exemplars:
     tsops.die("no exemplars in %s" % tsops.exemplars_dir())
 
 
+extra_props = dict(setting.split("=", 1) for setting in args.set)
+
+
 def measure(exemplar, result, tileable):
     return tsops.run_measure(args.measure, exemplar, result, tileable)
 
@@ -57,7 +64,7 @@ def synthesize(exemplar, name, tileable):
     result = os.path.join(outdir, "%s-%s.png" % (name, "tile" if tileable else "plain"))
     start = time.monotonic()
     code, _, err = tsops.synthesize_cli(exemplar, result, width=args.size, height=args.size,
-                                        seed=args.seed, tileable=tileable)
+                                        seed=args.seed, tileable=tileable, **extra_props)
     seconds = time.monotonic() - start
     warnings = tsops.op_warnings(err)
     if code != 0 or warnings or not os.path.isfile(result):
