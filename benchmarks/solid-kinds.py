@@ -31,7 +31,10 @@
 # RECORDS (-r), and -R RECORDS prints the tables from such a file alone,
 # so a long run can be summarised part way.
 #
-# Usage: benchmarks/solid-kinds.py [-b BUILD] [-s SIZE] [-k KIND,...] [-r RECORDS] [SEED ...]
+# -o DIR keeps solid-shapes' strips there as KIND-SEED-slices.png
+# (docs/solid-kinds.py --strips DIR makes its picture from them).
+#
+# Usage: benchmarks/solid-kinds.py [-b BUILD] [-s SIZE] [-k KIND,...] [-r RECORDS] [-o DIR] [SEED ...]
 #        benchmarks/solid-kinds.py -R RECORDS
 # e.g. OMP_NUM_THREADS=2 nice benchmarks/solid-kinds.py -s 64 1   (a few minutes)
 #      OMP_NUM_THREADS=2 nice benchmarks/solid-kinds.py -s 128 1 2 3
@@ -41,6 +44,7 @@ import importlib.util
 import json
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -135,7 +139,7 @@ def run_shapes(shapes, size, seed, kind, outdir):
     return figures, seconds, rss_mib
 
 
-def measure_kind(build, size, seed, kind, scratch):
+def measure_kind(build, size, seed, kind, scratch, keep):
     stem = "%s-%d" % (kind, seed)
     vol = os.path.join(scratch, stem + ".vol")
     subprocess.run([os.path.join(build, "benchmarks", "solid-truth"), kind, str(size), str(seed), vol],
@@ -144,7 +148,10 @@ def measure_kind(build, size, seed, kind, scratch):
     os.remove(vol)
     figures, seconds, rss = run_shapes(os.path.join(build, "benchmarks", "solid-shapes"), size, seed,
                                        kind, scratch)
-    ours = our_slices(os.path.join(scratch, kind + "-slices.png"), size, scratch, stem)
+    strip = os.path.join(scratch, kind + "-slices.png")
+    if keep:
+        shutil.copyfile(strip, os.path.join(keep, "%s-%d-slices.png" % (kind, seed)))
+    ours = our_slices(strip, size, scratch, stem)
     phases = 3 if kind in THREE_PHASES else 2
     out = subprocess.run([os.path.join(build, "tools", "texsynth-measure"), "--shapes", "--json",
                           "--phases=%d" % phases, exemplar] + truth + ours,
@@ -273,6 +280,7 @@ def main():
     parser.add_argument("-k", "--kinds", help="comma-separated kinds (default: both halves)")
     parser.add_argument("-r", "--records", help="append every record to this file (JSON lines)")
     parser.add_argument("-R", "--from-records", help="only print the tables from this file")
+    parser.add_argument("-o", "--keep-strips", help="keep solid-shapes' strips in this folder")
     args = parser.parse_args()
     if args.from_records:
         with open(args.from_records) as f:
@@ -284,10 +292,12 @@ def main():
         if not os.access(os.path.join(args.build, *tool), os.X_OK):
             sys.exit("%s: not built (meson setup and ninja)" % os.path.join(args.build, *tool))
     records = []
+    if args.keep_strips:
+        os.makedirs(args.keep_strips, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="solid-kinds-") as scratch:
         for seed in args.seeds:
             for kind in kinds:
-                record = measure_kind(args.build, args.size, seed, kind, scratch)
+                record = measure_kind(args.build, args.size, seed, kind, scratch, args.keep_strips)
                 records.append(record)
                 print("seed %d %s: %.1f s" % (seed, kind, record["seconds"]), file=sys.stderr, flush=True)
                 if args.records:
