@@ -43,6 +43,15 @@ ts_op_required_input (GeglOperation *operation)
   return box && !too_large (box) ? *box : empty;
 }
 
+GeglRectangle
+ts_op_input_bounding_box (GeglOperation *operation)
+{
+  const GeglRectangle *box = gegl_operation_source_get_bounding_box (operation, "input");
+  GeglRectangle empty = { 0, 0, 0, 0 };
+
+  return box ? *box : empty;
+}
+
 gboolean
 ts_op_read_input (GeglOperation *operation,
                   GeglBuffer    *input,

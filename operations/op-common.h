@@ -42,6 +42,10 @@ TsParams ts_op_default_params (void);
  * gegl:color), which GEGL would otherwise try to render in full. */
 GeglRectangle ts_op_required_input (GeglOperation *operation);
 
+/* The bounding box of "input", or an empty one if it has none: the output
+ * of an op that changes its input in place. */
+GeglRectangle ts_op_input_bounding_box (GeglOperation *operation);
+
 /* Read the whole "input" of `operation` from `input` into a newly
  * allocated image (g_free its pixels). An empty or missing input gives a
  * 0x0 image with NULL pixels, which the engine reports as empty; returns
@@ -82,7 +86,7 @@ void ts_op_write_output (GeglBuffer          *output,
                          gint                 x,
                          gint                 y);
 
-/* Class methods both whole-image ops share: input and output in the
+/* Class methods the whole-image ops share: input and output in the
  * engine's format; all of the input for any output; the whole output
  * cached and invalidated at once, since synthesis is global. */
 void          ts_op_prepare (GeglOperation *operation);
@@ -99,7 +103,8 @@ void ts_op_class_init_whole_image (GeglOperationClass *operation_class,
                                    gboolean (*process) (GeglOperation *, GeglBuffer *, GeglBuffer *,
                                                         const GeglRectangle *, gint));
 /* The same methods but `process`, for an op of another base class (a
- * composer sets its own). */
+ * composer sets its own); an op with its own pads replaces prepare and
+ * get_required_for_output afterwards. */
 void ts_op_class_init_whole_image_methods (GeglOperationClass *operation_class,
                                            GeglRectangle (*get_bounding_box) (GeglOperation *));
 

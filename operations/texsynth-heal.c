@@ -82,15 +82,6 @@ property_int (memory_limit, _("Memory limit (MiB)"), 0)
 
 TS_OP_MODULE (texsynth_heal)
 
-static GeglRectangle
-get_bounding_box (GeglOperation *operation)
-{
-  const GeglRectangle *box = gegl_operation_source_get_bounding_box (operation, "input");
-  GeglRectangle empty = { 0, 0, 0, 0 };
-
-  return box ? *box : empty;
-}
-
 static void
 prepare (GeglOperation *operation)
 {
@@ -116,11 +107,11 @@ get_required_for_output (GeglOperation *operation, const gchar *input_pad,
     {
       /* An unbounded mask (a colour fill) is read over the image only. */
       if (box && g_strcmp0 (input_pad, "aux") == 0)
-        return get_bounding_box (operation);
+        return ts_op_input_bounding_box (operation);
       return empty;
     }
   if (g_strcmp0 (input_pad, "aux") == 0)
-    return get_bounding_box (operation);
+    return ts_op_input_bounding_box (operation);
   return *box;
 }
 
@@ -152,7 +143,7 @@ process (GeglOperation       *operation,
          gint                 level G_GNUC_UNUSED)
 {
   GeglProperties *o = GEGL_PROPERTIES (operation);
-  GeglRectangle box = get_bounding_box (operation);
+  GeglRectangle box = ts_op_input_bounding_box (operation);
   TsHealParams params;
   gchar message[TS_MESSAGE_SIZE] = "";
 
@@ -173,19 +164,12 @@ process (GeglOperation       *operation,
 static void
 gegl_op_class_init (GeglOpClass *klass)
 {
-  GeglOperationClass          *operation_class = GEGL_OPERATION_CLASS (klass);
-  GeglOperationComposer3Class *composer_class = GEGL_OPERATION_COMPOSER3_CLASS (klass);
+  GeglOperationClass *operation_class = GEGL_OPERATION_CLASS (klass);
 
-  operation_class->prepare                   = prepare;
-  operation_class->get_bounding_box          = get_bounding_box;
-  operation_class->get_required_for_output   = get_required_for_output;
-  operation_class->get_cached_region         = ts_op_get_cached_region;
-  operation_class->get_invalidated_by_change = ts_op_get_invalidated_by_change;
-  /* The engine has its own threads; GEGL must not split the work. */
-  operation_class->threaded                  = FALSE;
-  operation_class->want_in_place             = FALSE;
-  operation_class->cache_policy              = GEGL_CACHE_POLICY_ALWAYS;
-  composer_class->process                    = process;
+  ts_op_class_init_whole_image_methods (operation_class, ts_op_input_bounding_box);
+  operation_class->prepare                 = prepare;
+  operation_class->get_required_for_output = get_required_for_output;
+  GEGL_OPERATION_COMPOSER3_CLASS (klass)->process = process;
 
   gegl_operation_class_set_keys (operation_class,
     "name",               "texsynth:heal",

@@ -51,16 +51,6 @@ property_double (seam_width, _("Seam width"), 0.125)
 
 TS_OP_MODULE (texsynth_tileable)
 
-/* The output covers exactly the input. */
-static GeglRectangle
-get_bounding_box (GeglOperation *operation)
-{
-  const GeglRectangle *box = gegl_operation_source_get_bounding_box (operation, "input");
-  GeglRectangle empty = { 0, 0, 0, 0 };
-
-  return box ? *box : empty;
-}
-
 static void
 prepare (GeglOperation *operation)
 {
@@ -95,7 +85,7 @@ process (GeglOperation       *operation,
          gint                 level G_GNUC_UNUSED)
 {
   GeglProperties *o = GEGL_PROPERTIES (operation);
-  GeglRectangle box = get_bounding_box (operation);
+  GeglRectangle box = ts_op_input_bounding_box (operation);
   TsTileableParams params;
   TsImage image, result = { 0, 0, NULL };
   int32_t *sources = NULL;
@@ -172,7 +162,8 @@ gegl_op_class_init (GeglOpClass *klass)
 {
   GeglOperationClass       *operation_class = GEGL_OPERATION_CLASS (klass);
 
-  ts_op_class_init_whole_image (operation_class, get_bounding_box, process);
+  /* The output covers exactly the input. */
+  ts_op_class_init_whole_image (operation_class, ts_op_input_bounding_box, process);
   operation_class->prepare = prepare;
 
   gegl_operation_class_set_keys (operation_class,

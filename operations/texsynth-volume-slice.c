@@ -142,21 +142,6 @@ get_required_for_output (GeglOperation       *operation,
   return ts_volume_op_required_input (operation, input_pad);
 }
 
-static GeglRectangle
-get_whole_output (GeglOperation       *operation,
-                  const GeglRectangle *roi G_GNUC_UNUSED)
-{
-  return get_bounding_box (operation);
-}
-
-static GeglRectangle
-get_invalidated_by_change (GeglOperation       *operation,
-                           const gchar         *input_pad G_GNUC_UNUSED,
-                           const GeglRectangle *input_region G_GNUC_UNUSED)
-{
-  return get_bounding_box (operation);
-}
-
 /* The slice the properties ask for, checked before any synthesis. */
 static gboolean
 slice_index (GeglProperties *o, size_t *index, TsError *error)
@@ -270,16 +255,10 @@ gegl_op_class_init (GeglOpClass *klass)
   GeglOperationClass          *operation_class = GEGL_OPERATION_CLASS (klass);
   GeglOperationComposer3Class *composer_class  = GEGL_OPERATION_COMPOSER3_CLASS (klass);
 
+  ts_op_class_init_whole_image_methods (operation_class, get_bounding_box);
   operation_class->attach                    = attach;
   operation_class->prepare                   = prepare;
-  operation_class->get_bounding_box          = get_bounding_box;
   operation_class->get_required_for_output   = get_required_for_output;
-  operation_class->get_cached_region         = get_whole_output;
-  operation_class->get_invalidated_by_change = get_invalidated_by_change;
-  /* The engine has its own threads; GEGL must not split the work. */
-  operation_class->threaded                  = FALSE;
-  operation_class->want_in_place             = FALSE;
-  operation_class->cache_policy              = GEGL_CACHE_POLICY_ALWAYS;
   composer_class->process                    = process;
   composer_class->aux_label                  = _("X exemplar");
   composer_class->aux_description            = _("Exemplar of the slices across x "
