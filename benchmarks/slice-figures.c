@@ -2,37 +2,29 @@
 #include "slice-figures.h"
 #include "metrics.h"
 #include "truth-solids.h"
+#include "../operations/lab-arithmetic.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-static double
-linear (double c)
-{
-  c /= 255.0;
-  return c <= 0.04045 ? c / 12.92 : pow ((c + 0.055) / 1.055, 2.4);
-}
-
-static double
-lab_f (double t)
-{
-  return t > 216.0 / 24389.0 ? cbrt (t) : (24389.0 / 27.0 * t + 16.0) / 116.0;
-}
+/* The truth solids are drawn in sRGB with its own D65 white (no
+ * adaptation to the ops' D50: the truth and its slices are compared only
+ * with each other and with solids synthesised from them). */
+static const double d65[3] = { 0.95047, 1.0, 1.08883 };
 
 void
 slice_rgb8_to_lab (const uint8_t *rgb, size_t count, float *lab)
 {
   for (size_t i = 0; i < count; i++)
     {
-      double r = linear (rgb[3 * i]), g = linear (rgb[3 * i + 1]), b = linear (rgb[3 * i + 2]);
-      double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
-      double y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
-      double z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
-      double fx = lab_f (x), fy = lab_f (y), fz = lab_f (z);
-      lab[4 * i] = (float) (116.0 * fy - 16.0);
-      lab[4 * i + 1] = (float) (500.0 * (fx - fy));
-      lab[4 * i + 2] = (float) (200.0 * (fy - fz));
+      double r = ts_srgb_to_linear (rgb[3 * i] / 255.0);
+      double g = ts_srgb_to_linear (rgb[3 * i + 1] / 255.0);
+      double b = ts_srgb_to_linear (rgb[3 * i + 2] / 255.0);
+      double xyz[3] = { 0.4124 * r + 0.3576 * g + 0.1805 * b,
+                        0.2126 * r + 0.7152 * g + 0.0722 * b,
+                        0.0193 * r + 0.1192 * g + 0.9505 * b };
+      ts_xyz_to_lab (xyz, d65, lab + 4 * i);
       lab[4 * i + 3] = 1.0f;
     }
 }

@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later
  */
 #include "op-lab.h"
+#include "lab-arithmetic.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -186,7 +187,7 @@ to_linear (const Decoder *decoder, double v)
   switch (decoder->curve)
     {
     case CURVE_SRGB:
-      linear = a <= 0.04045 ? a / 12.92 : pow ((a + 0.055) / 1.055, 2.4);
+      linear = ts_srgb_to_linear (a);
       break;
     case CURVE_GAMMA:
       linear = pow (a, decoder->gamma);
@@ -195,14 +196,6 @@ to_linear (const Decoder *decoder, double v)
       return v;
     }
   return v < 0.0 ? -linear : linear;
-}
-
-static double
-lab_f (double t)
-{
-  const double epsilon = 216.0 / 24389.0, kappa = 24389.0 / 27.0;
-
-  return t > epsilon ? cbrt (t) : (kappa * t + 16.0) / 116.0;
 }
 
 /* Component `c` of the pixel at `p`, as stored. */
@@ -236,17 +229,12 @@ decode (const Decoder *decoder, const guchar *raw, size_t n, float *lab)
 
   for (size_t i = 0; i < n; i++, raw += stride, lab += 4)
     {
-      double rgb[3], xyz[3], fx, fy, fz;
+      double rgb[3], xyz[3];
 
       for (int c = 0; c < 3; c++)
         rgb[c] = to_linear (decoder, component (decoder, raw, layout->grey ? 0 : c));
       mat_apply (decoder->rgb_to_xyz, rgb, xyz);
-      fx = lab_f (xyz[0] / d50[0]);
-      fy = lab_f (xyz[1] / d50[1]);
-      fz = lab_f (xyz[2] / d50[2]);
-      lab[0] = (float) (116.0 * fy - 16.0);
-      lab[1] = (float) (500.0 * (fx - fy));
-      lab[2] = (float) (200.0 * (fy - fz));
+      ts_xyz_to_lab (xyz, d50, lab);
       lab[3] = layout->alpha ? (float) component (decoder, raw, layout->n - 1) : 1.0f;
     }
 }
