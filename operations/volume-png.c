@@ -3,16 +3,15 @@
  */
 #include "volume-png.h"
 #include "op-common.h"
+#include "volume/atomic-file.h"
 
 #include <glib/gi18n-lib.h>
 #include <glib/gstdio.h>
 
 #include <errno.h>
 #include <fcntl.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 static const guint8 png_signature[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
@@ -22,7 +21,7 @@ void
 ts_png_set_init (TsPngSet *set)
 {
   set->targets = g_ptr_array_new_with_free_func (g_free);
-  set->temps = g_ptr_array_new_with_free_func (g_free);
+  set->temps = g_ptr_array_new_with_free_func (free); /* ts_atomic_reserve's */
 }
 
 static void
@@ -32,28 +31,6 @@ clear (TsPngSet *set)
   g_clear_pointer (&set->temps, g_ptr_array_unref);
 }
 
-/* The mode a new file gets (g_mkstemp makes 0600 files): the old file's,
- * or 0666 less the umask, read from /proc since umask() cannot be read
- * without changing it for every thread. */
-static mode_t
-new_file_mode (const gchar *target)
-{
-  struct stat st;
-  mode_t mask = 022;
-  gchar *status = NULL;
-
-  if (g_stat (target, &st) == 0 && S_ISREG (st.st_mode))
-    return st.st_mode & 07777;
-  if (g_file_get_contents ("/proc/self/status", &status, NULL, NULL))
-    {
-      const gchar *line = strstr (status, "\nUmask:");
-      if (line)
-        mask = (mode_t) strtoul (line + 7, NULL, 8);
-      g_free (status);
-    }
-  return 0666 & ~mask;
-}
-
 /* gegl:png-save only warns on failure: check that the file holds the
  * whole image (signature, size, end chunk) and make it durable. */
 static gboolean
@@ -61,7 +38,7 @@ check_png (const gchar *path, const gchar *target, size_t width, size_t height, 
 {
   guint8 head[24], tail[12];
   gboolean ok = FALSE;
-  int fd = g_open (path, O_RDONLY, 0);
+  int fd = g_open (path, O_RDONLY, 0), errnum;
   off_t length;
 
   if (fd < 0)
@@ -76,9 +53,8 @@ check_png (const gchar *path, const gchar *target, size_t width, size_t height, 
          ((size_t) head[16] << 24 | (size_t) head[17] << 16 | (size_t) head[18] << 8 | head[19]) == width &&
          ((size_t) head[20] << 24 | (size_t) head[21] << 16 | (size_t) head[22] << 8 | head[23]) == height &&
          memcmp (tail, png_end, sizeof png_end) == 0;
-  if (ok && (fchmod (fd, new_file_mode (target)) != 0 || fsync (fd) != 0))
+  if (ok && (errnum = ts_atomic_seal (fd, target)) != 0)
     {
-      int errnum = errno;
       close (fd);
       return ts_op_set_error (error, TS_ERROR_IO,
                               _("cannot write '%s': %s"), target, g_strerror (errnum));
@@ -110,27 +86,17 @@ ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
                 size_t width, size_t height, gboolean opaque, TsError *error)
 {
   GeglRectangle rect = { 0, 0, (gint) width, (gint) height };
-  gchar *temp = g_strconcat (target, ".tmp-XXXXXX", NULL);
   GeglBuffer *buffer;
-  int fd;
+  char *temp;
 
   if (!gegl_has_operation ("gegl:png-save"))
-    {
-      g_free (temp);
-      return ts_op_set_error (error, TS_ERROR_IO,
-                              _("GEGL's gegl:png-save operation is not available "
-                                "(check GEGL_PATH)"));
-    }
+    return ts_op_set_error (error, TS_ERROR_IO,
+                            _("GEGL's gegl:png-save operation is not available "
+                              "(check GEGL_PATH)"));
   /* Reserve a unique name; png-save then replaces the empty file. */
-  fd = g_mkstemp (temp);
-  if (fd < 0)
-    {
-      int errnum = errno;
-      g_free (temp);
-      return ts_op_set_error (error, TS_ERROR_IO,
-                              _("cannot write '%s': %s"), target, g_strerror (errnum));
-    }
-  close (fd);
+  temp = ts_atomic_reserve (target, error);
+  if (!temp)
+    return FALSE;
   g_ptr_array_add (set->targets, g_strdup (target));
   g_ptr_array_add (set->temps, temp);
 
@@ -158,6 +124,9 @@ ts_png_set_commit (TsPngSet *set, TsError *error)
                        g_strerror (errnum));
         }
     }
+  /* The files of a set share one folder. */
+  if (set->targets->len > 0)
+    ts_atomic_sync_folder (g_ptr_array_index (set->targets, 0));
   clear (set);
   return TRUE;
 }

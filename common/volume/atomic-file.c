@@ -47,34 +47,48 @@ write_failure (const char *path, int errnum, TsError *error)
   return ts_fail (error, TS_ERROR_IO, "cannot write '%s': %s", path, strerror (errnum));
 }
 
-TsStatus
-ts_atomic_open (TsAtomicFile *f, const char *path, TsError *error)
+/* Creates the temporary file beside `path`: its name (malloc'd) in
+ * `temp_path` and its descriptor in `fd`. On failure nothing exists. */
+static TsStatus
+create_temp (const char *path, char **temp_path, int *fd, TsError *error)
 {
   static const char suffix[] = ".tmp-XXXXXX";
   size_t length;
+
+  *temp_path = NULL;
+  if (!path || !*path)
+    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no file name given");
+
+  length = strlen (path);
+  *temp_path = malloc (length + sizeof suffix);
+  if (!*temp_path)
+    return ts_fail (error, TS_ERROR_OUT_OF_MEMORY, "out of memory writing '%s'", path);
+  memcpy (*temp_path, path, length);
+  memcpy (*temp_path + length, suffix, sizeof suffix);
+
+  *fd = mkstemp (*temp_path);
+  if (*fd < 0)
+    {
+      int errnum = errno;
+      free (*temp_path);
+      *temp_path = NULL;
+      return write_failure (path, errnum, error);
+    }
+  return TS_OK;
+}
+
+TsStatus
+ts_atomic_open (TsAtomicFile *f, const char *path, TsError *error)
+{
+  TsStatus status;
   int fd;
 
   f->path = path;
   f->temp_path = NULL;
   f->file = NULL;
-  if (!path || !*path)
-    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT, "no file name given");
-
-  length = strlen (path);
-  f->temp_path = malloc (length + sizeof suffix);
-  if (!f->temp_path)
-    return ts_fail (error, TS_ERROR_OUT_OF_MEMORY, "out of memory writing '%s'", path);
-  memcpy (f->temp_path, path, length);
-  memcpy (f->temp_path + length, suffix, sizeof suffix);
-
-  fd = mkstemp (f->temp_path);
-  if (fd < 0)
-    {
-      int errnum = errno;
-      free (f->temp_path);
-      f->temp_path = NULL;
-      return write_failure (path, errnum, error);
-    }
+  status = create_temp (path, &f->temp_path, &fd, error);
+  if (status != TS_OK)
+    return status;
   f->file = fdopen (fd, "wb");
   if (!f->file)
     {
@@ -109,9 +123,9 @@ ts_atomic_abort (TsAtomicFile *f)
   f->temp_path = NULL;
 }
 
-/* Make the rename itself durable; best effort, the data already is. */
-static void
-sync_folder (const char *path)
+/* Best effort: the data already is durable. */
+void
+ts_atomic_sync_folder (const char *path)
 {
   const char *slash = strrchr (path, '/');
   char *folder;
@@ -141,6 +155,26 @@ sync_folder (const char *path)
   free (folder);
 }
 
+char *
+ts_atomic_reserve (const char *path, TsError *error)
+{
+  char *temp_path;
+  int fd;
+
+  if (create_temp (path, &temp_path, &fd, error) != TS_OK)
+    return NULL;
+  close (fd);
+  return temp_path;
+}
+
+int
+ts_atomic_seal (int fd, const char *target)
+{
+  if (fchmod (fd, new_file_mode (target)) != 0 || fsync (fd) != 0)
+    return errno;
+  return 0;
+}
+
 TsStatus
 ts_atomic_commit (TsAtomicFile *f, TsError *error)
 {
@@ -149,10 +183,8 @@ ts_atomic_commit (TsAtomicFile *f, TsError *error)
   errno = 0;
   if (fflush (f->file) != 0 || ferror (f->file))
     errnum = errno ? errno : EIO;
-  else if (fchmod (fileno (f->file), new_file_mode (f->path)) != 0)
-    errnum = errno;
-  else if (fsync (fileno (f->file)) != 0)
-    errnum = errno;
+  else
+    errnum = ts_atomic_seal (fileno (f->file), f->path);
 
   /* fclose may report a delayed write error (NFS) as well. */
   if (fclose (f->file) != 0 && !errnum)
@@ -167,6 +199,6 @@ ts_atomic_commit (TsAtomicFile *f, TsError *error)
     }
   free (f->temp_path);
   f->temp_path = NULL;
-  sync_folder (f->path);
+  ts_atomic_sync_folder (f->path);
   return TS_OK;
 }

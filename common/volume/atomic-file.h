@@ -1,4 +1,5 @@
-/* Atomic replacement of a file (internal to the volume writers).
+/* Atomic replacement of a file (internal: the engine's volume writers and
+ * the ops' PNG sets).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #ifndef TS_ATOMIC_FILE_H
 #define TS_ATOMIC_FILE_H
@@ -24,5 +25,16 @@ TsStatus ts_atomic_write (TsAtomicFile *f, const void *data, size_t bytes, TsErr
 TsStatus ts_atomic_commit (TsAtomicFile *f, TsError *error);
 /* Close and remove the temporary file (after a failed write). */
 void     ts_atomic_abort (TsAtomicFile *f);
+
+/* The same steps for a writer that takes a file name, not a FILE (an
+ * image saver). ts_atomic_reserve creates the empty temporary file beside
+ * `path` and returns its name (malloc'd), or NULL with `error` filled. */
+char *ts_atomic_reserve (const char *path, TsError *error);
+/* Give the written temporary file, open as `fd`, the mode the target
+ * keeps (or a new file's) and sync it to disk; 0 or an errno value. */
+int   ts_atomic_seal (int fd, const char *target);
+/* After renaming temporary files over their targets: make the renames
+ * into the folder of `path` durable (best effort). */
+void  ts_atomic_sync_folder (const char *path);
 
 #endif
