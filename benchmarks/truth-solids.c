@@ -7,6 +7,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "truth-solids.h"
 #include "truth-solids-internal.h"
+#include "engine/rng.h"
 
 #include <math.h>
 #include <string.h>
@@ -16,18 +17,11 @@
 
 typedef TruthSolid Solid;
 
-static uint64_t
-mix64 (uint64_t z)
-{
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
 double
 truth_uniform (const Solid *s, uint32_t stream, uint64_t key)
 {
-  uint64_t h = mix64 (mix64 (((uint64_t) s->seed << 32 | stream) + 0x9e3779b97f4a7c15ULL) ^ key);
+  uint64_t h = ts_mix64 (ts_mix64 (((uint64_t) s->seed << 32 | stream) + 0x9e3779b97f4a7c15ULL)
+                         ^ key);
   return (double) (h >> 11) * (1.0 / 9007199254740992.0);
 }
 

@@ -1,6 +1,7 @@
 /* Window grids (gather, SSD) and their PCA basis.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "window-grid.h"
+#include "engine/rng.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -193,8 +194,7 @@ ts_grid_pca (const TsWindowGrid *grid, size_t head, size_t stride, double *mean,
   for (size_t i = 0; i < dims; i++)
     for (size_t k = 0; k < head; k++)
       {
-        state = state * 1664525u + 1013904223u;
-        basis[i * stride + k] = (double) (state >> 8) / 16777216.0 - 0.5;
+        basis[i * stride + k] = (double) ts_lcg_next24 (&state) / 16777216.0 - 0.5;
       }
   orthonormalise (basis, dims, head, stride);
   for (int it = 0; it < PCA_ITERATIONS; it++)

@@ -1,6 +1,7 @@
-/* Counter-based random numbers (internal): every value is a pure function
- * of (seed, level, iteration, pixel, stream), so results never depend on
- * thread scheduling.
+/* Random numbers (internal; the tools and tests use them too). The
+ * synthesis's are counter-based: every value is a pure function of (seed,
+ * level, iteration, pixel, stream), so results never depend on thread
+ * scheduling.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #ifndef TS_RNG_H
 #define TS_RNG_H
@@ -28,6 +29,16 @@ static inline uint64_t
 ts_random_below (uint64_t r, uint64_t n)
 {
   return (uint64_t) (((unsigned __int128) r * n) >> 64);
+}
+
+/* A small sequential generator for fixed starting points and test
+ * fixtures (Numerical Recipes' 32-bit LCG): advances `state` and returns
+ * its top 24 bits. Not for the synthesis: its values depend on call order. */
+static inline uint32_t
+ts_lcg_next24 (uint32_t *state)
+{
+  *state = *state * 1664525u + 1013904223u;
+  return *state >> 8;
 }
 
 #endif

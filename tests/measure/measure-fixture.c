@@ -2,6 +2,7 @@
  * tilings, crops, rolls, block collages, blur and noise.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
+#include "engine/rng.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -31,13 +32,6 @@ static float *
 px (const TsImage *im, size_t x, size_t y)
 {
   return im->pixels + (y * im->width + x) * TS_CHANNELS;
-}
-
-static uint32_t
-next_random (uint32_t *state)
-{
-  *state = *state * 1664525u + 1013904223u;
-  return *state >> 8;
 }
 
 static size_t
@@ -166,8 +160,8 @@ main (int argc, char **argv)
       for (ptrdiff_t by = -off; by < (ptrdiff_t) h - off; by += (ptrdiff_t) bs)
         for (ptrdiff_t bx = -off; bx < (ptrdiff_t) w - off; bx += (ptrdiff_t) bs)
           {
-            size_t sx = next_random (&seed) % (in.width - bs + 1);
-            size_t sy = next_random (&seed) % (in.height - bs + 1);
+            size_t sx = ts_lcg_next24 (&seed) % (in.width - bs + 1);
+            size_t sy = ts_lcg_next24 (&seed) % (in.height - bs + 1);
             for (size_t y = 0; y < bs; y++)
               for (size_t x = 0; x < bs; x++)
                 memcpy (px (&out, wrap (bx + (ptrdiff_t) x, w), wrap (by + (ptrdiff_t) y, h)),
@@ -188,9 +182,9 @@ main (int argc, char **argv)
       for (size_t i = 0; i < w * h; i++)
         {
           float *p = out.pixels + i * TS_CHANNELS;
-          p[0] = (float) (next_random (&seed) % 1001) / 10.0f;
-          p[1] = (float) (next_random (&seed) % 161) - 80.0f;
-          p[2] = (float) (next_random (&seed) % 161) - 80.0f;
+          p[0] = (float) (ts_lcg_next24 (&seed) % 1001) / 10.0f;
+          p[1] = (float) (ts_lcg_next24 (&seed) % 161) - 80.0f;
+          p[2] = (float) (ts_lcg_next24 (&seed) % 161) - 80.0f;
           p[3] = 1.0f;
         }
     }

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "metrics.h"
 #include "patch-search.h"
+#include "engine/rng.h"
 
 #include <float.h>
 #include <math.h>
@@ -30,13 +31,6 @@ static bool
 close_to (double a, double b, double rel, double abs_tol)
 {
   return fabs (a - b) <= rel * fabs (b) + abs_tol;
-}
-
-static uint32_t
-next_random (uint32_t *state)
-{
-  *state = *state * 1664525u + 1013904223u;
-  return *state >> 8;
 }
 
 static float *
@@ -71,7 +65,7 @@ make_texture (size_t w, size_t h, uint32_t seed, float quantum, bool flat)
           {
             double v = 30.0 * sin (0.4 * (double) x + 1.7 * c + seed)
                          * cos (0.3 * (double) y - c)
-                       + (double) (next_random (&seed) % 2000) / 100.0;
+                       + (double) (ts_lcg_next24 (&seed) % 2000) / 100.0;
             p[c] = quantum > 0.0f ? quantum * roundf ((float) v / quantum) : (float) v;
           }
         if (flat && x > w / 2 && y > h / 2)

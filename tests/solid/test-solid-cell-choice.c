@@ -10,6 +10,7 @@
 #include "test-util.h"
 #include "slice-figures.h"
 #include "solid/solid.h"
+#include "engine/rng.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -118,11 +119,9 @@ pebbles (TsImage *img, size_t side)
         float jitter[2], radius;
         for (int k = 0; k < 2; k++)
           {
-            state = state * 1664525u + 1013904223u;
-            jitter[k] = (float) (state >> 8) / 16777216.0f * 2.0f - 1.0f;
+            jitter[k] = (float) ts_lcg_next24 (&state) / 16777216.0f * 2.0f - 1.0f;
           }
-        state = state * 1664525u + 1013904223u;
-        radius = 4.0f + 2.5f * (float) (state >> 8) / 16777216.0f;
+        radius = 4.0f + 2.5f * (float) ts_lcg_next24 (&state) / 16777216.0f;
         float ox = (float) (cx * LATTICE) + 7.0f + jitter[0], oy = (float) (cy * LATTICE) + 7.0f + jitter[1];
         for (size_t y = cy * LATTICE; y < cy * LATTICE + LATTICE; y++)
           for (size_t x = cx * LATTICE; x < cx * LATTICE + LATTICE; x++)

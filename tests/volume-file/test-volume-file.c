@@ -5,6 +5,7 @@
 #include "test-util.h"
 #include "volume/volume.h"
 #include "volume/formats.h"
+#include "engine/rng.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -397,13 +398,6 @@ test_bad_headers (void)
   unlink (path);
 }
 
-static uint32_t
-next_random (uint32_t *state)
-{
-  *state = *state * 1664525u + 1013904223u;
-  return *state >> 8;
-}
-
 /* Random files and randomly damaged headers: any status, never a crash,
  * and the result is either a consistent volume or nothing. */
 static void
@@ -437,9 +431,9 @@ test_random_bytes (void)
 
       if (trial % 3 == 0)
         {
-          length = next_random (&state) % sizeof data;
+          length = ts_lcg_next24 (&state) % sizeof data;
           for (size_t i = 0; i < length; i++)
-            data[i] = (uint8_t) next_random (&state);
+            data[i] = (uint8_t) ts_lcg_next24 (&state);
           if (length >= 4 && trial % 2)
             memcpy (data, trial % 4 == 1 ? "VOLU" : "DDS ", 4);
         }
@@ -449,8 +443,8 @@ test_random_bytes (void)
           size_t header = format ? 148 : 280;
           length = base_length[format];
           memcpy (data, base[format], length);
-          for (int flips = 1 + (int) (next_random (&state) % 4); flips > 0; flips--)
-            data[4 + next_random (&state) % (header - 4)] = (uint8_t) next_random (&state);
+          for (int flips = 1 + (int) (ts_lcg_next24 (&state) % 4); flips > 0; flips--)
+            data[4 + ts_lcg_next24 (&state) % (header - 4)] = (uint8_t) ts_lcg_next24 (&state);
         }
       write_all (path, data, length);
       status = ts_volume_read (path, 1 << 20, &v, NULL, &error);
