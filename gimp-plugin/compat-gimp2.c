@@ -1,5 +1,5 @@
-/* GIMP 2.10 glue shared by its procedures: reading the exemplar layer and
- * making new images from the results.
+/* GIMP 2.10 glue shared by its procedures: reading the exemplar layer,
+ * making new images from the results and ending a run with one.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <string.h>
@@ -106,4 +106,18 @@ new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
       return -1;
     }
   return image;
+}
+
+gboolean
+finish_with_image (Outcome *outcome, GimpRunMode mode, const gchar *procedure,
+                   gconstpointer args, guint32 size)
+{
+  if (outcome->new_image < 0)
+    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Could not make the new image.")));
+
+  if (mode != GIMP_RUN_NONINTERACTIVE)
+    gimp_set_data (procedure, args, size);
+  if (mode == GIMP_RUN_INTERACTIVE)
+    gimp_display_new (outcome->new_image);
+  return TRUE;
 }

@@ -36,4 +36,11 @@ gboolean read_exemplar (gint32 drawable, gboolean crop_to_selection, TsExemplar 
 gint32 new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar **names,
                   const gboolean *alphas, gint n);
 
+/* The end of a run that made outcome->new_image: a failure if it could
+ * not be made; else the run's `args` (`size` bytes) kept as the last
+ * values of `procedure` unless non-interactive, and the image shown if
+ * interactive. */
+gboolean finish_with_image (Outcome *outcome, GimpRunMode mode, const gchar *procedure,
+                            gconstpointer args, guint32 size);
+
 #endif /* TEXSYNTH_COMPAT_GIMP2_H */

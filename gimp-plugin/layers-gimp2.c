@@ -131,12 +131,5 @@ ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params, Outcom
   outcome->new_image = new_image (&set.exemplars[set.driver], set.results,
                                   (const gchar **) set.names, set.alphas, set.n);
   ts_material_set_clear (&set);
-  if (outcome->new_image < 0)
-    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Could not make the new image.")));
-
-  if (mode != GIMP_RUN_NONINTERACTIVE)
-    gimp_set_data (TS_PROC_RENDER_LAYERS, &args, sizeof args);
-  if (mode == GIMP_RUN_INTERACTIVE)
-    gimp_display_new (outcome->new_image);
-  return TRUE;
+  return finish_with_image (outcome, mode, TS_PROC_RENDER_LAYERS, &args, sizeof args);
 }

@@ -238,14 +238,7 @@ run_render (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *o
   outcome->new_image = new_image (&exemplar, &result, &name, NULL, 1);
   g_object_unref (result);
   ts_exemplar_clear (&exemplar);
-  if (outcome->new_image < 0)
-    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Could not make the new image.")));
-
-  if (mode != GIMP_RUN_NONINTERACTIVE)
-    gimp_set_data (TS_PROC_RENDER, &args, sizeof args);
-  if (mode == GIMP_RUN_INTERACTIVE)
-    gimp_display_new (outcome->new_image);
-  return TRUE;
+  return finish_with_image (outcome, mode, TS_PROC_RENDER, &args, sizeof args);
 }
 
 static gboolean
@@ -394,14 +387,7 @@ run_solid (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *ou
   for (gint i = 0; i < 3; i++)
     g_object_unref (slices[i]);
   ts_exemplar_clear (&exemplar);
-  if (outcome->new_image < 0)
-    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Could not make the new image.")));
-
-  if (mode != GIMP_RUN_NONINTERACTIVE)
-    gimp_set_data (TS_PROC_SOLID, &args, sizeof args);
-  if (mode == GIMP_RUN_INTERACTIVE)
-    gimp_display_new (outcome->new_image);
-  return TRUE;
+  return finish_with_image (outcome, mode, TS_PROC_SOLID, &args, sizeof args);
 }
 
 static void
