@@ -19,6 +19,7 @@ def check(cond, message):
     if not cond:
         failures.append(message)
         print("FAIL: " + message, file=sys.stderr)
+    return cond
 
 
 def run(*args):
@@ -48,11 +49,15 @@ def size_of(path):
 
 def main():
     if not os.path.isdir(EXEMPLARS):
-        print("TEXSYNTH_EXEMPLARS is not a folder: skipping", file=sys.stderr)
-        return 77
+        print("FAIL  TEXSYNTH_EXEMPLARS is not a folder: %s" % EXEMPLARS, file=sys.stderr)
+        return 1
     names = sorted(n for n in os.listdir(EXEMPLARS) if n.endswith(".png"))
     check(len(names) > 0, "no exemplars in " + EXEMPLARS)
     ex = {n: os.path.join(EXEMPLARS, n) for n in names}
+
+    def present(n):
+        """Whether the exemplar a check needs is there: a failure if not."""
+        return check(n in ex, "%s is among the exemplars in %s" % (n, EXEMPLARS))
     tmp = tempfile.mkdtemp(prefix="texsynth-measure-test-")
     t = lambda name: os.path.join(tmp, name)
 
@@ -91,7 +96,7 @@ def main():
     # A crop that is not tileable (odd offsets cut the pattern's period),
     # tiled 2x2: its wrap-around edges are seams, its inside is verbatim.
     seam_names = [n for n in ("bark.png", "cracked.png", "stone33.png", "granite1.png",
-                              "rock.png", "wood1.png") if n in ex]
+                              "rock.png", "wood1.png") if present(n)]
     for n in seam_names:
         w, h = size_of(ex[n])
         cw, ch = w - 17, h - 13
@@ -124,7 +129,7 @@ def main():
     # A collage of exemplar blocks whose blocks straddle the edges intact
     # tiles as well as its inside; the same collage cut at block edges not.
     for n in ("bluemetal.png", "land1.png"):
-        if n not in ex:
+        if not present(n):
             continue
         wrapped, cut = t("collage-wrapped-" + n), t("collage-cut-" + n)
         fixture("blocks", ex[n], wrapped, "256", "256", "32", "4", "16")
@@ -142,7 +147,7 @@ def main():
 
     # --- blur: sharpness well below 1 ---------------------------------------
     for n in ("bark.png", "brick.png", "java.png", "3dweave.png"):
-        if n in ex:
+        if present(n):
             blurred = t("blur-" + n)
             fixture("blur", ex[n], blurred, "4")
             m = measure(ex[n], blurred)
@@ -153,7 +158,7 @@ def main():
     # --- noise: nothing like the exemplar -----------------------------------
     fixture("noise", t("noise.png"), "64", "64", "3")
     for n in ("java.png", "leopard.png", "parque1.png"):
-        if n in ex:
+        if present(n):
             m = measure(ex[n], t("noise.png"))
             self_m = measure(ex[n], ex[n])
             check(m["coherence"] > 15 and m["completeness"] > 10 and m["copy"] < 0.01,
@@ -162,7 +167,7 @@ def main():
 
     # --- copy ---------------------------------------------------------------
     for n in ("brick.png", "wood1.png", "granite1.png"):
-        if n not in ex:
+        if not present(n):
             continue
         w, h = size_of(ex[n])
         tiled, rolled = t("tile22-" + n), t("roll-" + n)
@@ -176,7 +181,7 @@ def main():
         check(m["copy"] > 0.99, "%s rolled, tileable: copy %r, want 1" % (n, m["copy"]))
 
     # --- bigger results -----------------------------------------------------
-    if "canyons2.png" in ex:
+    if present("canyons2.png"):
         small, big = t("c128.png"), t("c128-collage-1024.png")
         fixture("crop", ex["canyons2.png"], small, "0", "0", "128", "128")
         fixture("blocks", small, big, "1024", "1024", "32", "9")
