@@ -18,9 +18,15 @@ import tsops
 from tsops import check, note
 
 # Medians over the exemplars of the plain results (see texsynth-measure
-# --help for the definitions): (measure, "max" or "min", bound).
+# --help for the definitions): (measure, "max" or "min", bound). Each
+# bound sits between the medians over seeds (seed 1, the test's, as in
+# docs/benchmarks.md: coherence 1.06, completeness 0.63, copy 0.29,
+# sharpness 0.96; seed 2: 1.27, 0.65, 0.29, 0.96) and a clearly worse
+# engine's (one iteration per level, --set iterations=1: 2.20, 1.18,
+# 0.14, 0.86; copy rises to about 0.40 with the coarse neighbourhoods of
+# tileable results, 11 and 7, for plain ones too: docs/design.md).
 PLAIN_LIMITS = [
-    ("coherence", "max", 1.3),
+    ("coherence", "max", 1.6),
     ("completeness", "max", 0.9),
     ("copy", "max", 0.35),
     ("sharpness", "min", 0.9),
