@@ -1,5 +1,5 @@
 # A row of GEGL image nodes on a white backdrop, saved as PNG, for the
-# scripts that regenerate the README's pictures. Importing it points GEGL
+# scripts that regenerate the pictures of the README and docs/. Importing it points GEGL
 # at the build's ops (BUILD: the script's first argument, else build/
 # under the source root) and GEGL's own, before Gegl.init reads GEGL_PATH.
 # SPDX-License-Identifier: LGPL-3.0-or-later
