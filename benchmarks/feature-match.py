@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# Does a feature map help the match? (issue 16) A material whose structure
+# Does a feature map help the match? A material whose structure
 # is clearer in its height map than in its albedo: albedo = brick.png at a
 # quarter of its contrast under per-pixel colour noise (the brick courses
 # hard to see), height = brick.png's grey (courses and mortar plain).

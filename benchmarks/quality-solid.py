@@ -24,7 +24,7 @@
 # The seam figures are means over 4 slices per axis, across the wrap-around
 # edges and, for comparison, across the slices' middle lines.
 #
-# Targets (issue 4): slice coherence median <= 1.5 x the 2D median,
+# Targets: slice coherence median <= 1.5 x the 2D median,
 # completeness <= 1.2, copy <= 0.5, seam <= 1.10 across the boundary.
 
 import argparse

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# Issue 71's figures on every kind of truth solid (truth-solids.h), per
+# The shape figures on every kind of truth solid (truth-solids.h), per
 # half (tuning, checking) and per kind: how well a solid synthesised from
 # a truth's exemplar keeps its shapes, beside the truth's own slices.
 # SPDX-License-Identifier: LGPL-3.0-or-later
@@ -273,7 +273,7 @@ def summarise(records):
 
 
 def main():
-    parser = argparse.ArgumentParser(description="Issue 71's shape figures on every truth solid.")
+    parser = argparse.ArgumentParser(description="The shape figures (texsynth-measure --shapes) and the solid aims on every truth solid, per kind and per half.")
     parser.add_argument("seeds", nargs="*", type=int, default=[1, 2, 3])
     parser.add_argument("-b", "--build", default=os.path.join(HERE, "..", "build"))
     parser.add_argument("-s", "--size", type=int, default=128)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Issue 14's solid aims over several seeds, not one: runs
+# The solid aims over several seeds, not one: runs
 # build/benchmarks/solid-shapes for each seed on the ground-truth solids
 # and prints, per seed and solid, our figures against the truth's, each
 # aim it misses, and per solid the mean and the worst over the seeds.
@@ -9,7 +9,7 @@
 # draws the truth), so an engine change that looks better on seed 1 can
 # be worse on most seeds. Judge a change by the misses and the means here.
 #
-# Aims (issue 14): axis-edges <= 1.08 (over the exemplar's), sharpness
+# Aims: axis-edges <= 1.08 (over the exemplar's), sharpness
 # >= 0.9 x the truth's, coherence and completeness <= 1.15 x the truth's,
 # seam <= 1.10.
 #
@@ -114,7 +114,7 @@ def run_seed(shapes, size, seed, kinds, new_sample, cell_structure):
 
 def main():
     parser = argparse.ArgumentParser(
-        description="Issue 14's solid aims over several seeds, from build/benchmarks/solid-shapes.")
+        description="The solid aims over several seeds, from build/benchmarks/solid-shapes.")
     parser.add_argument("seeds", nargs="*", type=int, default=[1, 2, 3])
     parser.add_argument("-b", "--build", default=os.path.join(os.path.dirname(__file__), "..", "build"))
     parser.add_argument("-s", "--size", type=int, default=64)

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # How well does a solid texture's recorded source volume reproduce it, and
-# how much would its colours alone say? (issue 16, part 4) For each
+# how much would its colours alone say? For each
 # exemplar and seed, texsynth:volume-save writes the colour volume and the
 # source volume (content=source: x, y, orientation per voxel) as .dds
 # files. The sources applied to the exemplar's 8-bit pixels must give the

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# What the layout output costs (issue 16): texsynth:synthesize rendered to
+# What the layout output costs: texsynth:synthesize rendered to
 # a buffer with colours and with source-map=true, median wall time of
 # RUNS each, alternating, in one process (no gegl start-up); then
 # gegl:map-absolute applying that map to the exemplar.

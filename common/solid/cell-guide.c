@@ -6,8 +6,8 @@
  * Voronoi wall; both ride in the working alpha channel, so the search
  * matches them along with the colours. Why: slice neighbourhoods alone
  * never agree across the three orientations on where a stone ends, and
- * the stones came back as fragments with mortar in clumps (README,
- * "Solid textures").
+ * the stones came back as fragments with mortar in clumps (docs/design.md,
+ * "The cell structure").
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "solid.h"
 #include "engine/rng.h"

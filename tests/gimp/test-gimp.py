@@ -221,7 +221,7 @@ if tsops.check(r is not None and os.path.isfile(tileable), "tileable: ran and ex
                               capture_output=True, text=True, timeout=300)
         return json.loads(proc.stdout)["seam"] if proc.returncode == 0 else float("inf")
 
-    # About 1 is seamless; the README's figure for texsynth:tileable is 0.36
+    # About 1 is seamless; docs/benchmarks.md's figure for texsynth:tileable is 0.36
     # (median over the shared exemplars).
     after = seam(tileable)
     tsops.check(after < 1.0, "tileable: the result tiles (seam figure %.2f < 1.0)" % after)

@@ -1,4 +1,4 @@
-# Matching on a feature map (issue 16): texsynth:synthesize's aux, a map
+# Matching on a feature map: texsynth:synthesize's aux, a map
 # aligned with the exemplar, counts in the match. The case where it must
 # help: a material whose albedo (granite1.png) says nothing of the
 # structure that its height map (brick.png's grey) shows. The height map

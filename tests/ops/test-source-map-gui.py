@@ -1,8 +1,8 @@
-# source-map in GIMP and in gegl (issue 16): GIMP's generated dialogs of
+# source-map in GIMP and in gegl: GIMP's generated dialogs of
 # texsynth:synthesize and texsynth:tileable must not offer source-map
 # (GIMP would show the coordinates as a strange two-channel picture), so
 # the property carries the GUM key visible = 0, which GIMP's property GUI
-# evaluates; the gegl tool, with the README's XML graph and with a command
+# evaluates; the gegl tool, with docs/synthesis.md's XML graph and with a command
 # line, must still use it: the layout applied to the exemplar gives the
 # colour result.
 # SPDX-License-Identifier: LGPL-3.0-or-later
@@ -31,7 +31,7 @@ colour = os.path.join(work, "colour.png")
 code, _, err = tsops.synthesize_cli(brick, colour, width=SIZE, height=SIZE, seed=SEED)
 check(code == 0 and os.path.isfile(colour), "gegl: the colour result (%s)" % err.strip())
 
-# The README's graph, with brick as both the driving and the laid-out map.
+# docs/synthesis.md's graph, with brick as both the driving and the laid-out map.
 xml = os.path.join(work, "layout.xml")
 with open(xml, "w") as f:
     f.write("""<?xml version='1.0' encoding='UTF-8'?>

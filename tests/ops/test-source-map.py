@@ -1,4 +1,4 @@
-# The layout as an image (issue 16): texsynth:synthesize and
+# The layout as an image: texsynth:synthesize and
 # texsynth:tileable with source-map=true give, per pixel, the absolute
 # pixel-centre coordinates of the input pixel it comes from, as
 # gegl:map-absolute reads them. Applied with sampler-type=nearest to the

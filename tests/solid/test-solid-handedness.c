@@ -1,5 +1,5 @@
-/* Which way round the slices read one shared exemplar (issue 14,
- * common/solid/handedness.c). Lines that fall diagonally cannot be
+/* Which way round the slices read one shared exemplar
+ * (common/solid/handedness.c). Lines that fall diagonally cannot be
  * sheets of a solid in all three orientations read the same way round;
  * the engine reads the exemplar mirrored across x, and then every slice
  * shows the lines. Rising lines and per-axis exemplars are read as

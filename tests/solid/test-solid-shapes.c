@@ -1,5 +1,5 @@
 /* Solid synthesis reproduces the exemplar's kind of shapes in every
- * slice (issue 14): on the ground-truth solids (benchmarks/truth-solids.c)
+ * slice: on the ground-truth solids (benchmarks/truth-solids.c)
  * a volume synthesised from the truth's z = 0 slice is measured, across
  * x, y, z and the diagonal x = z, beside the truth's own slices: no more
  * axis-aligned edge energy than 1.08 x the exemplar's (no blocks, seams or
@@ -9,7 +9,7 @@
  * seam aims, which need no truth.
  *
  * Sharpness at least 0.9 x the truth's, the issue's aim, on all three
- * (met at 128^3 too: see the README's solid figures). The truth solids'
+ * (met at 128^3 too: see docs/benchmarks.md's solid figures). The truth solids'
  * aims hold on the mean of three seeds (see test_kind). Beside them, a
  * bound on specks (lone pieces of a lightness phase, phase-thickness.h)
  * per slice pixel against the truth's: sharpness counts a speck as edge,

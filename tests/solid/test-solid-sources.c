@@ -1,4 +1,4 @@
-/* Solid synthesis sources (issue 16): every voxel's recorded vote,
+/* Solid synthesis sources: every voxel's recorded vote,
  * applied to the exemplars, gives the volume bit for bit; aligned maps
  * come out as the same function of the volume; sources are the same at 1
  * and 2 threads (translucent alpha: within 1 ulp, exact in 8 bits);

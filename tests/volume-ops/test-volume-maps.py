@@ -1,4 +1,4 @@
-# Aligned maps and sources of solid textures (issue 16): texsynth:volume-save
+# Aligned maps and sources of solid textures: texsynth:volume-save
 # and texsynth:volume-slice with a map on "aux3" lay the map out with the
 # cached volume's sources. The exemplar itself as the map gives the colour
 # volume byte for byte; an inverted map gives the inverted colour volume;
