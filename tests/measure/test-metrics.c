@@ -4,6 +4,7 @@
 #include "metrics.h"
 #include "patch-search.h"
 #include "engine/rng.h"
+#include "test-util.h"
 
 #include <float.h>
 #include <math.h>
@@ -15,17 +16,6 @@
 #include <omp.h>
 #endif
 
-static int failures;
-
-#define CHECK(cond, ...)                                                      \
-  do {                                                                        \
-    if (!(cond)) {                                                            \
-      failures++;                                                             \
-      fprintf (stderr, "%s:%d: CHECK failed: %s: ", __FILE__, __LINE__, #cond); \
-      fprintf (stderr, __VA_ARGS__);                                          \
-      fputc ('\n', stderr);                                                   \
-    }                                                                         \
-  } while (0)
 
 static bool
 close_to (double a, double b, double rel, double abs_tol)
@@ -476,9 +466,5 @@ main (void)
   free (ex.pixels);
   free (res.pixels);
   free (smooth.pixels);
-  if (failures)
-    fprintf (stderr, "test-metrics: %d check(s) failed\n", failures);
-  else
-    printf ("test-metrics: all checks passed\n");
-  return failures ? 1 : 0;
+  return test_finish ("test-metrics");
 }

@@ -3,23 +3,13 @@
  * k-means split of coloured images into those shapes' phases.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "shape-metrics.h"
+#include "test-util.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static int failures;
-
-#define CHECK(cond, ...)                                                      \
-  do {                                                                        \
-    if (!(cond)) {                                                            \
-      failures++;                                                             \
-      fprintf (stderr, "%s:%d: CHECK failed: %s: ", __FILE__, __LINE__, #cond); \
-      fprintf (stderr, __VA_ARGS__);                                          \
-      fputc ('\n', stderr);                                                   \
-    }                                                                         \
-  } while (0)
 
 #define EXACT 1e-12
 #define PI 3.14159265358979323846
@@ -401,9 +391,5 @@ main (void)
   test_l_shape ();
   test_edges ();
   test_kmeans ();
-  if (failures)
-    fprintf (stderr, "%d checks failed\n", failures);
-  else
-    printf ("test-shape-metrics: all checks passed\n");
-  return failures ? 1 : 0;
+  return test_finish ("test-shape-metrics");
 }
