@@ -14,17 +14,21 @@
 #define EXIT_USAGE 2
 
 static const char usage_text[] =
-  "Usage: texsynth-measure [OPTION]... EXEMPLAR RESULT\n"
+  "Usage: texsynth-measure [OPTION]... EXEMPLAR RESULT...\n"
   "  or:  texsynth-measure --shapes [--phases=N] [--json] EXEMPLAR RESULT...\n"
   "Measures how well RESULT, synthesised from EXEMPLAR, reproduces it.\n"
   "Images are compared in CIE Lab over 7x7 windows (alpha is ignored).\n"
+  "Several RESULTs are each measured against EXEMPLAR, with the same options;\n"
+  "their figures follow in order, each after a 'result: PATH' line (with\n"
+  "--json, one object per line).\n"
   "\n"
   "Options:\n"
   "  --tileable      RESULT tiles in both directions: its windows wrap\n"
   "                  around the edges, and the seam measure is printed\n"
   "  --tileable=x    ... horizontally only (left/right edges)\n"
   "  --tileable=y    ... vertically only (top/bottom edges)\n"
-  "  --json          print one JSON object instead of name: value lines\n"
+  "  --json          print a JSON object (with \"result\", its path) instead of\n"
+  "                  name: value lines\n"
   "  --shapes        measure the shapes of the phases of EXEMPLAR and of each\n"
   "                  RESULT instead (see Shapes below)\n"
   "  --phases=N      with --shapes: split the colours into N = 2 (default) or 3\n"
@@ -268,6 +272,88 @@ measure_shapes (const char *const *paths, int n_paths, int phases, bool json)
   return code;
 }
 
+/* One result's figures, after its "result: PATH" line when there are
+ * several; with --json one object per line. */
+static void
+print_measures (const char *path, const TsMeasures *m, const TsImage *exemplar,
+                const TsImage *result, bool wrap_x, bool wrap_y, bool json, bool several)
+{
+  bool first = true, tileable = wrap_x || wrap_y;
+  if (json)
+    {
+      fputs ("{\"result\": ", stdout);
+      print_json_string (path);
+      first = false;
+    }
+  else if (several)
+    printf ("result: %s\n", path);
+  print_value ("coherence", m->coherence, json, &first);
+  print_value ("completeness", m->completeness, json, &first);
+  if (tileable || json)
+    print_value ("seam", m->seam, json, &first);
+  print_value ("copy", m->copy, json, &first);
+  print_value ("sharpness", m->sharpness, json, &first);
+  print_value (json ? "axis_edges" : "axis-edges", m->axis_edges, json, &first);
+  if (json)
+    {
+      print_value ("axis_edges_exemplar", m->axis_edges_exemplar, json, &first);
+      print_value ("axis_edges_result", m->axis_edges_result, json, &first);
+      print_value ("anisotropy_exemplar", m->anisotropy_exemplar, json, &first);
+      printf (", \"tileable\": \"%s\", \"exemplar_size\": [%zu, %zu], "
+              "\"result_size\": [%zu, %zu]}\n",
+              wrap_x && wrap_y ? "xy" : wrap_x ? "x" : wrap_y ? "y" : "none",
+              exemplar->width, exemplar->height, result->width, result->height);
+    }
+}
+
+/* paths[1..] each against paths[0], read once; all are measured before
+ * any is printed, so a failure prints no figures. */
+static int
+measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y, bool json)
+{
+  int n_results = n_paths - 1, measured = 0, code = EXIT_USAGE;
+  TsMeasures *m = calloc ((size_t) n_results, sizeof *m);
+  TsImage *sizes = calloc ((size_t) n_results, sizeof *sizes);
+  TsImage exemplar = { 0 }, result = { 0 };
+
+  if (!m || !sizes)
+    {
+      free (m);
+      free (sizes);
+      return fail ("%s", "out of memory");
+    }
+  ts_io_init ();
+  if (load (paths[0], &exemplar))
+    for (; measured < n_results; measured++)
+      {
+        TsMeasureStatus status = TS_MEASURE_OK;
+        if (!load (paths[1 + measured], &result))
+          break;
+        status = ts_measure_all (&exemplar, &result, wrap_x, wrap_y, &m[measured]);
+        sizes[measured] = (TsImage) { result.width, result.height, NULL };
+        free (result.pixels);
+        result.pixels = NULL;
+        if (status != TS_MEASURE_OK)
+          {
+            fail ("%s", status == TS_MEASURE_OUT_OF_MEMORY
+                          ? "out of memory: the images are too large to measure"
+                          : "an image is smaller than 7x7 pixels");
+            break;
+          }
+      }
+  if (measured == n_results)
+    {
+      for (int i = 0; i < n_results; i++)
+        print_measures (paths[1 + i], &m[i], &exemplar, &sizes[i], wrap_x, wrap_y, json,
+                        n_results > 1);
+      code = fflush (stdout) == 0 ? EXIT_SUCCESS : EXIT_USAGE;
+    }
+  free (exemplar.pixels);
+  free (m);
+  free (sizes);
+  return code;
+}
+
 int
 main (int argc, char **argv)
 {
@@ -275,10 +361,6 @@ main (int argc, char **argv)
   const char *const *paths = (const char *const *) argv + 1;
   int n_paths = 0, phases = TS_SHAPE_DEFAULT_PHASES;
   bool json = false, wrap_x = false, wrap_y = false, options_done = false, shapes = false;
-  TsImage exemplar = { 0 }, result = { 0 };
-  TsMeasures m;
-  TsMeasureStatus status;
-  int code = EXIT_USAGE;
 
   for (int i = 1; i < argc; i++)
     {
@@ -312,8 +394,6 @@ main (int argc, char **argv)
       else
         return usage_error ("unknown option '%s'", a);
     }
-  if (n_paths > 2 && !shapes)
-    return usage_error ("too many arguments ('%s'): expected EXEMPLAR RESULT", paths[2]);
   if (phases != TS_SHAPE_DEFAULT_PHASES && !shapes)
     return usage_error ("%s", "--phases needs --shapes");
   if ((wrap_x || wrap_y) && shapes)
@@ -324,49 +404,5 @@ main (int argc, char **argv)
     return usage_error ("%s", n_paths == 0 ? "missing EXEMPLAR and RESULT"
                                            : "missing RESULT (expected EXEMPLAR RESULT)");
 
-  ts_io_init ();
-  if (!load (paths[0], &exemplar) || !load (paths[1], &result))
-    goto out;
-
-  status = ts_measure_all (&exemplar, &result, wrap_x, wrap_y, &m);
-  if (status == TS_MEASURE_OUT_OF_MEMORY)
-    {
-      fail ("%s", "out of memory: the images are too large to measure");
-      goto out;
-    }
-  if (status != TS_MEASURE_OK)
-    {
-      fail ("%s", "an image is smaller than 7x7 pixels");
-      goto out;
-    }
-
-  {
-    bool first = true, tileable = wrap_x || wrap_y;
-    if (json)
-      fputc ('{', stdout);
-    print_value ("coherence", m.coherence, json, &first);
-    print_value ("completeness", m.completeness, json, &first);
-    if (tileable || json)
-      print_value ("seam", m.seam, json, &first);
-    print_value ("copy", m.copy, json, &first);
-    print_value ("sharpness", m.sharpness, json, &first);
-    print_value (json ? "axis_edges" : "axis-edges", m.axis_edges, json, &first);
-    if (json)
-      {
-        print_value ("axis_edges_exemplar", m.axis_edges_exemplar, json, &first);
-        print_value ("axis_edges_result", m.axis_edges_result, json, &first);
-        print_value ("anisotropy_exemplar", m.anisotropy_exemplar, json, &first);
-      }
-    if (json)
-      printf (", \"tileable\": \"%s\", \"exemplar_size\": [%zu, %zu], "
-              "\"result_size\": [%zu, %zu]}\n",
-              wrap_x && wrap_y ? "xy" : wrap_x ? "x" : wrap_y ? "y" : "none",
-              exemplar.width, exemplar.height, result.width, result.height);
-  }
-  code = fflush (stdout) == 0 ? EXIT_SUCCESS : EXIT_USAGE;
-
-out:
-  free (exemplar.pixels);
-  free (result.pixels);
-  return code;
+  return measure_results (paths, n_paths, wrap_x, wrap_y, json);
 }

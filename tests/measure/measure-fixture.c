@@ -1,5 +1,7 @@
 /* Makes test images for the texsynth-measure tests from an exemplar:
- * tilings, crops, rolls, block collages, blur and noise.
+ * tilings, crops, rolls, block collages, blur and noise. Several commands,
+ * joined by '+', run in turn in one process (one GEGL start-up for all),
+ * so a later one can read an earlier one's output.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
 #include "engine/rng.h"
@@ -17,7 +19,8 @@ static const char usage_text[] =
   "       measure-fixture blocks IN OUT W H BLOCK SEED [OFFSET]\n"
   "                                              (collage of random exemplar blocks)\n"
   "       measure-fixture blur IN OUT SIGMA      (Gaussian, in Lab)\n"
-  "       measure-fixture noise OUT W H SEED     (uniform random colours)\n";
+  "       measure-fixture noise OUT W H SEED     (uniform random colours)\n"
+  "       measure-fixture COMMAND... + COMMAND...  (in turn, stopping at a failure)\n";
 
 static bool
 alloc_image (TsImage *im, size_t w, size_t h)
@@ -93,19 +96,24 @@ blur (const TsImage *in, TsImage *out, double sigma)
   return true;
 }
 
-int
-main (int argc, char **argv)
+/* One command: argv[0] is its name, argv[1..argc-1] its arguments. */
+static int
+make (int argc, char **argv)
 {
   TsImage in = { 0 }, out = { 0 };
-  const char *cmd = argc > 1 ? argv[1] : "", *out_path;
+  const char *cmd, *out_path;
   char why[512];
   int first_out = 3;
+
+  /* Shifted one back, so argv[i] is the i-th argument as in main's. */
+  argc++;
+  argv--;
+  cmd = argc > 1 ? argv[1] : "";
 
   if ((strcmp (cmd, "tile") == 0 && argc == 6) || (strcmp (cmd, "roll") == 0 && argc == 6)
       || (strcmp (cmd, "crop") == 0 && argc == 8) || (strcmp (cmd, "blocks") == 0 && (argc == 8 || argc == 9))
       || (strcmp (cmd, "blur") == 0 && argc == 5))
     {
-      ts_io_init ();
       if (!ts_io_load (argv[2], &in, why, sizeof why))
         {
           fprintf (stderr, "measure-fixture: %s\n", why);
@@ -113,10 +121,7 @@ main (int argc, char **argv)
         }
     }
   else if (strcmp (cmd, "noise") == 0 && argc == 6)
-    {
-      ts_io_init ();
-      first_out = 2;
-    }
+    first_out = 2;
   else
     {
       fputs (usage_text, stderr);
@@ -197,4 +202,19 @@ main (int argc, char **argv)
   free (in.pixels);
   free (out.pixels);
   return 0;
+}
+
+int
+main (int argc, char **argv)
+{
+  int start = 1, code = 0;
+
+  ts_io_init ();
+  for (int i = 1; i <= argc && code == 0; i++)
+    if (i == argc || strcmp (argv[i], "+") == 0)
+      {
+        code = make (i - start, argv + start);
+        start = i + 1;
+      }
+  return code;
 }
