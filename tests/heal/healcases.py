@@ -2,7 +2,7 @@
 # object outlines) written as 8-bit grey PNGs with the standard library.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 import math
-import struct
+import os
 import struct
 import zlib
 
@@ -66,21 +66,26 @@ def png_size(p):
         return struct.unpack(">II", f.read(24)[16:24])
 
 
-def make_texture(gegl_tool, exemplar_path, out_path, side=SIDE, tile=False):
+def make_texture(gegl_tool, exemplar_path, out_path, side=SIDE, tile=False, run_gegl=None):
     """The central side x side crop of the exemplar, or with `tile` of the
-    exemplar repeated (GIMP patterns tile), through the gegl tool."""
+    exemplar repeated (GIMP patterns tile), through the gegl tool, or
+    through `run_gegl` (the tool's arguments -> exit status, stdout,
+    stderr; a test's in-process twin of the tool) if given."""
     import subprocess
     w, h = png_size(exemplar_path)
     x, y = (0, 0) if tile else ((w - side) // 2, (h - side) // 2)
     if not tile and (x < 0 or y < 0):
         raise RuntimeError("%s is %dx%d, smaller than %d" % (exemplar_path, w, h, side))
-    proc = subprocess.run([gegl_tool, "-i", exemplar_path, "-o", out_path, "--"]
-                          + (["gegl:tile"] if tile else [])
-                          + ["gegl:crop", "x=%d" % x, "y=%d" % y,
-                             "width=%d" % side, "height=%d" % side],
-                          capture_output=True, text=True, stdin=subprocess.DEVNULL)
-    if proc.returncode != 0:
-        raise RuntimeError("gegl could not crop %s:\n%s" % (exemplar_path, proc.stderr))
+    args = (["-i", exemplar_path, "-o", out_path, "--"] + (["gegl:tile"] if tile else [])
+            + ["gegl:crop", "x=%d" % x, "y=%d" % y, "width=%d" % side, "height=%d" % side])
+    if run_gegl is None:
+        proc = subprocess.run([gegl_tool] + args, capture_output=True, text=True,
+                              stdin=subprocess.DEVNULL)
+        code, err = proc.returncode, proc.stderr
+    else:
+        code, _, err = run_gegl(args)
+    if code != 0 or not os.path.isfile(out_path):
+        raise RuntimeError("gegl could not crop %s:\n%s" % (exemplar_path, err))
 
 
 def median(values):

@@ -1,7 +1,11 @@
-# texsynth:heal through the real gegl tool: pixels outside the hole kept
+# texsynth:heal on the gegl tool's graphs: pixels outside the hole kept
 # bit for bit (8 and 16 bits, RGB and RGBA), determinism at 1 and 2 threads,
 # heal transparency (partial alpha blended), an aux2 source, the measured
-# quality of the bundled cases (texsynth-heal-measure) and bad input.
+# quality of the bundled cases (texsynth-heal-measure) and bad input. The
+# determinism runs are gegl tool runs, one process each (the thread count
+# is fixed at start); the others run in this process on the graph the tool
+# builds from the same arguments (tsops.run_gegl_here), sparing a GEGL
+# start-up each.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 #
 # Usage: test-heal-op.py --measure PATH-OF-texsynth-heal-measure
@@ -53,15 +57,16 @@ def path(name):
 
 
 def heal(src, dst, mask=None, source=None, env=None, **props):
-    """gegl -i src -o dst -- texsynth:heal props [aux=mask] [aux2=source];
-    returns the op's warning lines."""
+    """gegl -i src -o dst -- texsynth:heal props [aux=mask] [aux2=source],
+    in this process, or with `env` through the gegl tool; returns the op's
+    warning lines."""
     argv = ["-i", src, "-o", dst, "--", OP]
     argv += ["%s=%s" % (k.replace("_", "-"), v) for k, v in props.items()]
     if mask:
         argv += ["aux=[", "gegl:load", "path=" + mask, "]"]
     if source:
         argv += ["aux2=[", "gegl:load", "path=" + source, "]"]
-    code, _, err = tsops.run_gegl(argv, env=env)
+    code, _, err = tsops.run_gegl(argv, env=env) if env else tsops.run_gegl_here(argv)
     if code != 0 or not os.path.isfile(dst):
         die("gegl %s failed (exit %d):\n%s" % (" ".join(argv), code, err))
     return tsops.op_warnings(err)
@@ -107,6 +112,7 @@ def save_rgba(p, w, h, fn, bitdepth=8):
 
 # --- the bundled cases: quality, outside pixels, determinism -----------------
 gegl_tool = tsops.gegl_binary()
+texture = lambda *a, **k: healcases.make_texture(gegl_tool, *a, run_gegl=tsops.run_gegl_here, **k)
 masks = {}
 for name, make in healcases.HOLES.items():
     masks[name] = path("mask-%s.png" % name)
@@ -115,7 +121,7 @@ for name, make in healcases.HOLES.items():
 figures = []
 for tex in healcases.TEXTURES:
     src = path("%s.png" % tex)
-    healcases.make_texture(gegl_tool, exemplar(tex + ".png"), src)
+    texture(exemplar(tex + ".png"), src)
     w, h, before = pixels(src, "R'G'B' u16")
     for hole_name, make in healcases.HOLES.items():
         dst = path("%s-%s.png" % (tex, hole_name))
@@ -155,7 +161,7 @@ else:
 
 # Same seed, same result at 1 and 2 threads (two processes each).
 brick = path("brick.png")
-healcases.make_texture(gegl_tool, exemplar("brick.png"), brick, tile=True)
+texture(exemplar("brick.png"), brick, tile=True)
 runs = []
 for threads in ("1", "2", "2"):
     dst = path("brick-threads-%s-%d.png" % (threads, len(runs)))
@@ -213,7 +219,7 @@ check(m["outside_changed"] == 0 and m["hole_pixels"] == 48 * 48,
 
 # aux2: another image to copy from.
 source = path("bark-source.png")
-healcases.make_texture(gegl_tool, exemplar("bark.png"), source, side=96, tile=True)
+texture(exemplar("bark.png"), source, side=96, tile=True)
 dst = path("brick-from-bark.png")
 warnings = heal(brick, dst, masks["square"], source=source, seed=1)
 _, _, before = pixels(brick, "R'G'B' u16")

@@ -5,6 +5,7 @@
 # Gegl typelib, which images are read and written with.
 
 import atexit
+import contextlib
 import json
 import os
 import shutil
@@ -12,6 +13,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import warnings
 
 OP = "texsynth:synthesize"
 PREFIX = OP + ": "
@@ -128,6 +130,66 @@ def run_gegl(args, env=None, timeout=600):
         die("gegl %s was killed by signal %d\n%s"
             % (" ".join(args), -proc.returncode, proc.stderr))
     return proc.returncode, proc.stdout, proc.stderr
+
+
+@contextlib.contextmanager
+def captured_stderr():
+    """Within it, fd 2 goes to a file, where GLib and GEGL write warnings
+    (the ops' own too), and Python warnings are recorded, which PyGObject
+    makes of GObject's (a refused property value); afterwards the list it
+    gives holds all of that as one text."""
+    text = []
+    with tempfile.TemporaryFile() as captured, warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        sys.stdout.flush()
+        sys.stderr.flush()
+        saved = os.dup(2)
+        os.dup2(captured.fileno(), 2)
+        try:
+            yield text
+        finally:
+            os.dup2(saved, 2)
+            os.close(saved)
+            captured.seek(0)
+            text.append(captured.read().decode(errors="replace")
+                        + "".join("%s\n" % w.message for w in caught))
+
+
+def chain_node(args):
+    """The graph the gegl tool builds from its chain `args` (its arguments
+    after '--', or with '-i PATH' first for an input), made in this process
+    by the same parser (gegl_node_new_from_serialized); None if it cannot
+    be parsed."""
+    if args and args[0] == "-i":
+        args = ["gegl:load", "path=" + args[1]] + list(args[2:])
+
+    def quoted(arg):
+        key, eq, value = arg.partition("=")
+        if eq and any(c in value for c in ' "\\'):
+            return '%s="%s"' % (key, value.replace("\\", "\\\\").replace('"', '\\"'))
+        return arg
+    return gegl().Node.new_from_serialized(" ".join(quoted(a) for a in args), os.getcwd())
+
+
+def run_gegl_here(args):
+    """run_gegl's twin in this process, for a test that runs many chains:
+    every gegl run starts GEGL anew, about a second of CPU. `args` are the
+    gegl tool's (-i IN, -o OUT, '--', the chain); the result is saved with
+    gegl:save as the tool does. Returns (0, "", what went to stderr), or
+    exit status 1 if the chain cannot be parsed."""
+    args = list(args)
+    split = args.index("--") if "--" in args else len(args)
+    options, chain = args[:split], args[split + 1:]
+    source = options[options.index("-i") + 1] if "-i" in options else None
+    output = options[options.index("-o") + 1] if "-o" in options else None
+    with captured_stderr() as err:
+        graph = chain_node((["-i", source] if source else []) + chain)
+        if graph is not None and output:
+            save = graph.create_child("gegl:save")
+            save.set_property("path", output)
+            graph.connect_to("output", save, "input")
+            save.process()
+    return (0 if graph is not None else 1), "", err[0]
 
 
 def require_op():
