@@ -1,6 +1,7 @@
 # Quality of texsynth:synthesize on every exemplar, measured by
-# texsynth-measure: synthesise SIZExSIZE (plain and tileable) through the
-# gegl tool, print a table, and check the medians against thresholds.
+# texsynth-measure: synthesise SIZExSIZE (plain and tileable) on the gegl
+# tool's graph, in this process (tsops.run_gegl_here: one GEGL start-up for
+# all), print a table, and check the medians against thresholds.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 #
 # Usage: test-quality.py [--measure PATH] [--size N] [--seed N] [--keep DIR]
@@ -70,7 +71,8 @@ def synthesize(exemplar, name, tileable):
     result = os.path.join(outdir, "%s-%s.png" % (name, "tile" if tileable else "plain"))
     start = time.monotonic()
     code, _, err = tsops.synthesize_cli(exemplar, result, width=args.size, height=args.size,
-                                        seed=args.seed, tileable=tileable, **extra_props)
+                                        seed=args.seed, tileable=tileable, here=True,
+                                        **extra_props)
     seconds = time.monotonic() - start
     warnings = tsops.op_warnings(err)
     if code != 0 or warnings or not os.path.isfile(result):

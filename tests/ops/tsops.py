@@ -201,12 +201,13 @@ def require_op():
             % (OP, os.environ.get("GEGL_PATH", "<unset>"), out, err))
 
 
-def synthesize_cli(src, dst, env=None, timeout=600, extra_ops=(), **props):
-    """gegl -i src -o dst -- texsynth:synthesize key=value ... [extra ops]"""
+def synthesize_cli(src, dst, env=None, timeout=600, extra_ops=(), here=False, **props):
+    """gegl -i src -o dst -- texsynth:synthesize key=value ... [extra ops];
+    with `here`, on the same graph in this process (run_gegl_here)."""
     args = ["-i", src, "-o", dst, "--", OP]
     args += ["%s=%s" % (k.replace("_", "-"), _prop_text(v)) for k, v in props.items()]
     args += list(extra_ops)
-    return run_gegl(args, env=env, timeout=timeout)
+    return run_gegl_here(args) if here else run_gegl(args, env=env, timeout=timeout)
 
 
 def _prop_text(value):
