@@ -15,10 +15,11 @@ SLICE, SAVE, LOAD = "texsynth:volume-slice", "texsynth:volume-save", "texsynth:v
 
 
 def require_ops(*ops):
+    """GEGL finds the ops (asked in this process: a gegl --exists run would
+    start GEGL anew for each)."""
     for op in ops:
-        code, _, _ = tsops.run_gegl(["--exists", op])
-        if code != 0:
-            tsops.die("gegl cannot find %s (GEGL_PATH=%s)" % (op, os.environ.get("GEGL_PATH")))
+        if not tsops.gegl().has_operation(op):
+            tsops.die("GEGL cannot find %s (GEGL_PATH=%s)" % (op, os.environ.get("GEGL_PATH")))
 
 
 def prop_args(props):
