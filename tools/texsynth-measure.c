@@ -18,9 +18,12 @@ static const char usage_text[] =
   "  or:  texsynth-measure --shapes [--phases=N] [--json] EXEMPLAR RESULT...\n"
   "Measures how well RESULT, synthesised from EXEMPLAR, reproduces it.\n"
   "Images are compared in CIE Lab over 7x7 windows (alpha is ignored).\n"
+  "  or:  texsynth-measure ARGUMENTS + ARGUMENTS...\n"
   "Several RESULTs are each measured against EXEMPLAR, with the same options;\n"
   "their figures follow in order, each after a 'result: PATH' line (with\n"
-  "--json, one object per line).\n"
+  "--json, one object per line). Argument lists joined by '+' (a file named\n"
+  "'+' is './+') run in turn, each with its own options, in one process; the\n"
+  "first that fails ends the run.\n"
   "\n"
   "Options:\n"
   "  --tileable      RESULT tiles in both directions: its windows wrap\n"
@@ -309,7 +312,8 @@ print_measures (const char *path, const TsMeasures *m, const TsImage *exemplar,
 /* paths[1..] each against paths[0], read once; all are measured before
  * any is printed, so a failure prints no figures. */
 static int
-measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y, bool json)
+measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y, bool json,
+                 bool several)
 {
   int n_results = n_paths - 1, measured = 0, code = EXIT_USAGE;
   TsMeasures *m = calloc ((size_t) n_results, sizeof *m);
@@ -345,7 +349,7 @@ measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y
     {
       for (int i = 0; i < n_results; i++)
         print_measures (paths[1 + i], &m[i], &exemplar, &sizes[i], wrap_x, wrap_y, json,
-                        n_results > 1);
+                        several || n_results > 1);
       code = fflush (stdout) == 0 ? EXIT_SUCCESS : EXIT_USAGE;
     }
   free (exemplar.pixels);
@@ -354,8 +358,10 @@ measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y
   return code;
 }
 
-int
-main (int argc, char **argv)
+/* One argument list: argv[1..argc-1], argv[0] unused. `several`: there
+ * are other lists, so every result's text figures are named. */
+static int
+measure_arguments (int argc, char **argv, bool several)
 {
   /* the paths, gathered at the front of argv's arguments */
   const char *const *paths = (const char *const *) argv + 1;
@@ -404,5 +410,24 @@ main (int argc, char **argv)
     return usage_error ("%s", n_paths == 0 ? "missing EXEMPLAR and RESULT"
                                            : "missing RESULT (expected EXEMPLAR RESULT)");
 
-  return measure_results (paths, n_paths, wrap_x, wrap_y, json);
+  return measure_results (paths, n_paths, wrap_x, wrap_y, json, several);
+}
+
+int
+main (int argc, char **argv)
+{
+  int start = 1, code = EXIT_SUCCESS;
+  bool several = false;
+
+  for (int i = 1; i < argc; i++)
+    several = several || strcmp (argv[i], "+") == 0;
+  /* Each list's arguments are argv[start..i-1]; argv[start - 1], the
+   * program's name or a '+', stands in as its argv[0]. */
+  for (int i = 1; i <= argc && code == EXIT_SUCCESS; i++)
+    if (i == argc || strcmp (argv[i], "+") == 0)
+      {
+        code = measure_arguments (i - start + 1, argv + start - 1, several);
+        start = i + 1;
+      }
+  return code;
 }

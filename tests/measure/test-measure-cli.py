@@ -27,18 +27,35 @@ def run(*args):
     return p.returncode, p.stdout, p.stderr
 
 
-def measure_many(exemplar, results, *options):
-    """The measures of each result against `exemplar`, in one run (one GEGL
-    start-up): a list of dicts from --json output, one per line."""
-    code, out, err = run(exemplar, *results, "--json", *options)
-    if code != 0:
-        raise RuntimeError("texsynth-measure %s %s %s failed (%d): %s"
-                           % (exemplar, " ".join(results), " ".join(options), code, err))
+def rows_of(out, results, what):
     rows = [json.loads(line) for line in out.splitlines()]
     if [r["result"] for r in rows] != list(results):
         raise RuntimeError("texsynth-measure %s: results %r, asked for %r"
-                           % (exemplar, [r["result"] for r in rows], list(results)))
+                           % (what, [r["result"] for r in rows], list(results)))
     return rows
+
+
+def measure_lists(lists):
+    """The measures of several argument lists (exemplar, results, options),
+    joined by '+' into one run (one GEGL start-up): per list, a list of
+    dicts from --json output, one per line."""
+    args = []
+    for exemplar, results, options in lists:
+        args += (["+"] if args else []) + ["--json", *options, exemplar, *results]
+    code, out, err = run(*args)
+    if code != 0:
+        raise RuntimeError("texsynth-measure %s failed (%d): %s" % (" ".join(args), code, err))
+    rows = rows_of(out, [r for _, results, _ in lists for r in results], " ".join(args))
+    answers = []
+    for _, results, _ in lists:
+        answers.append(rows[:len(results)])
+        rows = rows[len(results):]
+    return answers
+
+
+def measure_many(exemplar, results, *options):
+    """The measures of each result against `exemplar`, in one run."""
+    return measure_lists([(exemplar, results, options)])[0]
 
 
 def measure(exemplar, result, *options):
@@ -110,8 +127,8 @@ def main():
     make.append(["crop", ex[names[0]], t("tiny.png"), "0", "0", "6", "40"])
     fixtures(make)
 
-    # Every result measured against an exemplar without options, in one run
-    # per exemplar: the exemplar itself first, then the checks' results.
+    # Every result measured against an exemplar without options: the
+    # exemplar itself first, then the checks' results.
     plain = {n: [ex[n]] for n in names}
     for n in blur_names:
         plain[n].append(t("blur-" + n))
@@ -119,11 +136,29 @@ def main():
         plain[n].append(t("noise.png"))
     for n in copy_names:
         plain[n] += [t("tile22-" + n), t("roll-" + n)]
-    got = {}
-    for n in names:
-        start = time.monotonic()
-        got[n] = dict(zip(plain[n], measure_many(ex[n], plain[n])))
-        print("%-14s %d result(s) against it: %.2f s" % (n, len(plain[n]), time.monotonic() - start))
+    # The other checks' measures: name -> (exemplar, results, options).
+    asked = {}
+    for n in seam_names:
+        crop, tiled, rolled, wide = (t(k + "-" + n) for k in ("crop", "tiled", "rolled", "wide"))
+        for option in ("--tileable", "--tileable=x", "--tileable=y"):
+            asked["tiled crop %s %s" % (n, option)] = (crop, [tiled], [option])
+            asked["wide %s %s" % (n, option)] = (wide, [crop], [option])
+        asked["crop vs tiling " + n] = (tiled, [crop, rolled], ["--tileable"])
+    for n in collage_names:
+        asked["collage " + n] = (ex[n], [t("collage-wrapped-" + n), t("collage-cut-" + n)],
+                                 ["--tileable"])
+    for n in copy_names:
+        asked["rolled tileable " + n] = (ex[n], [t("roll-" + n)], ["--tileable"])
+    if present("canyons2.png"):
+        asked["bigger"] = (t("c128.png"), [t("c128-collage-1024.png")], [])
+    # All in one run: one GEGL start-up.
+    lists = [(ex[n], plain[n], []) for n in names] + list(asked.values())
+    start = time.monotonic()
+    answers = measure_lists(lists)
+    print("%d argument lists, %d results, in one run: %.2f s"
+          % (len(lists), sum(len(r) for _, r, _ in lists), time.monotonic() - start))
+    got = {n: dict(zip(plain[n], rows)) for n, rows in zip(names, answers)}
+    answer = dict(zip(asked, answers[len(names):]))
 
     # --- every exemplar against itself: perfect scores --------------------
     for n in names:
@@ -138,28 +173,41 @@ def main():
         check(0.0 <= m["anisotropy_exemplar"] <= 1.0,
               "%s anisotropy %r outside [0, 1]" % (n, m["anisotropy_exemplar"]))
 
-    # --- several results in one run ------------------------------------------
-    # Each gets the figures it gets alone.
-    if blur_names:
-        n = blur_names[0]
+    # --- several results and argument lists in one run ----------------------
+    # Each result gets the figures it gets alone, whatever else the run
+    # measures, and each list has its own options.
+    if blur_names and seam_names:
+        n, s = blur_names[0], seam_names[0]
         alone, together = measure(ex[n], t("blur-" + n)), got[n][t("blur-" + n)]
         check(alone == together, "%s blurred, alone %r, with others %r" % (n, alone, together))
+        alone = measure(t("wide-" + s), t("crop-" + s), "--tileable=x")
+        together = answer["wide %s --tileable=x" % s][0]
+        check(alone == together, "%s wide --tileable=x, alone %r, in a list among others %r"
+              % (s, alone, together))
+    first = ex[names[0]]
+    code, out, err = run(first, first, "+", "--bogus")
+    check(code == 2 and "unknown option '--bogus'" in err,
+          "a bad argument list after a good one: exit 2 %d %r" % (code, err))
+    code, out, err = run(first, first, "+")
+    check(code == 2 and "missing EXEMPLAR and RESULT" in err,
+          "an empty argument list: exit 2 %d %r" % (code, err))
 
     # --- text output format ---------------------------------------------
-    first = ex[names[0]]
     code, out, err = run(first, first)
     keys = [line.split(":")[0] for line in out.splitlines()]
     check(code == 0 and keys == ["coherence", "completeness", "copy", "sharpness", "axis-edges"],
           "text output: %r" % out)
-    # Two results: each one's figures after a line naming it.
-    code, out, err = run("--tileable", first, first, t("tiny.png"))
-    check(code == 2 and not out and "tiny.png" in err,
-          "a result too small among several: no figures: %d %r %r" % (code, out, err))
-    code, out, err = run("--tileable", first, first, t("noise.png"))
+    # Several results, in one or two argument lists: each one's figures
+    # after a line naming it.
+    code, out, err = run("--tileable", first, first, "+", "--tileable", first, first, t("tiny.png"))
+    check(code == 2 and len(out.split("result: ")) == 2 and "tiny.png" in err,
+          "a result too small in a later list: the first list's figures, none of that list's: "
+          "%d %r %r" % (code, out, err))
+    code, out, err = run("--tileable", first, first, t("noise.png"), "+", "--tileable", first, first)
     blocks = out.split("result: ")
-    check(code == 0 and blocks[0] == "" and len(blocks) == 3,
-          "two results, each after 'result: ': %r" % out)
-    for block, path in zip(blocks[1:], (first, t("noise.png"))):
+    check(code == 0 and blocks[0] == "" and len(blocks) == 4,
+          "three results, each after 'result: ': %r" % out)
+    for block, path in zip(blocks[1:], (first, t("noise.png"), first)):
         lines = block.splitlines()
         keys = [line.split(":")[0] for line in lines[1:]]
         check(lines[0] == path and "seam" in keys, "--tileable prints seam for %s: %r" % (path, out))
@@ -172,23 +220,21 @@ def main():
 
     # --- seams -------------------------------------------------------------
     for n in seam_names:
-        crop, tiled, rolled, wide = (t(k + "-" + n) for k in ("crop", "tiled", "rolled", "wide"))
         # Tiled 2x2: the crop's wrap-around edges are seams, its inside is
         # verbatim.
         for option in ("--tileable", "--tileable=x", "--tileable=y"):
-            m = measure(crop, tiled, option)
+            m = answer["tiled crop %s %s" % (n, option)][0]
             print("%-14s 2x2 tiling of a crop %s: seam %.3f" % (n, option, m["seam"]))
             check(m["seam"] > 1.1, "%s tiled crop %s: seam %r, want > 1.1" % (n, option, m["seam"]))
         # Against an exemplar holding every wrapped window (the crop tiled),
         # the crop itself is seamless: its wrapped windows are all there.
-        for m in measure_many(tiled, [crop, rolled], "--tileable"):
+        for m in answer["crop vs tiling " + n]:
             check(0.9 < m["seam"] < 1.1 and m["coherence"] < 0.01,
                   "%s crop vs its tiling: seam %r coherence %r" % (n, m["seam"], m["coherence"]))
         # One direction only: tiled horizontally, the crop wraps seamlessly
         # in x but not in y.
-        mx = measure(wide, crop, "--tileable=x")
-        my = measure(wide, crop, "--tileable=y")
-        mxy = measure(wide, crop, "--tileable")
+        mx, my, mxy = (answer["wide %s %s" % (n, option)][0]
+                       for option in ("--tileable=x", "--tileable=y", "--tileable"))
         check(0.9 < mx["seam"] < 1.1 and mx["tileable"] == "x", "%s x: seam %r" % (n, mx["seam"]))
         check(my["seam"] > 1.1 and my["tileable"] == "y", "%s y: seam %r" % (n, my["seam"]))
         check(mxy["seam"] > 1.1, "%s xy: seam %r" % (n, mxy["seam"]))
@@ -196,11 +242,7 @@ def main():
     # A collage of exemplar blocks whose blocks straddle the edges intact
     # tiles as well as its inside; the same collage cut at block edges not.
     for n in collage_names:
-        start = time.monotonic()
-        mw, mc = measure_many(ex[n], [t("collage-wrapped-" + n), t("collage-cut-" + n)],
-                              "--tileable")
-        print("%-14s two 256x256 collages vs 256x256 exemplar: %.2f s"
-              % (n, time.monotonic() - start))
+        mw, mc = answer["collage " + n]
         check(mw["seam"] < 1.1, "%s tileable collage: seam %r" % (n, mw["seam"]))
         check(mc["seam"] > 1.1, "%s collage cut at the edge: seam %r" % (n, mc["seam"]))
         check(abs(mw["coherence"] - mc["coherence"]) < 1e-3,
@@ -228,14 +270,12 @@ def main():
         check(m["copy"] > 0.99, "%s 2x2 tiling: copy %r" % (n, m["copy"]))
         m = got[n][t("roll-" + n)]
         check(0.1 < m["copy"] < 0.5, "%s rolled: copy %r, want a quadrant" % (n, m["copy"]))
-        m = measure(ex[n], t("roll-" + n), "--tileable")
+        m = answer["rolled tileable " + n][0]
         check(m["copy"] > 0.99, "%s rolled, tileable: copy %r, want 1" % (n, m["copy"]))
 
     # --- bigger results -----------------------------------------------------
     if present("canyons2.png"):
-        start = time.monotonic()
-        m = measure(t("c128.png"), t("c128-collage-1024.png"))
-        print("1024x1024 collage vs 128x128 exemplar: %.2f s" % (time.monotonic() - start))
+        m = answer["bigger"][0]
         check(m["completeness"] < 1.5 and m["copy"] < 0.2, "1024 collage: %r" % m)
 
     # --- errors -------------------------------------------------------------

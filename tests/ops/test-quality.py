@@ -1,7 +1,8 @@
 # Quality of texsynth:synthesize on every exemplar, measured by
 # texsynth-measure: synthesise SIZExSIZE (plain and tileable) on the gegl
 # tool's graph, in this process (tsops.run_gegl_here: one GEGL start-up for
-# all), print a table, and check the medians against thresholds.
+# all), measure them all in one texsynth-measure run, print a table, and
+# check the medians against thresholds.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 #
 # Usage: test-quality.py [--measure PATH] [--size N] [--seed N] [--keep DIR]
@@ -63,10 +64,6 @@ if not exemplars:
 extra_props = dict(setting.split("=", 1) for setting in args.set)
 
 
-def measure(exemplar, result, tileable):
-    return tsops.run_measure(args.measure, exemplar, result, tileable)
-
-
 def synthesize(exemplar, name, tileable):
     result = os.path.join(outdir, "%s-%s.png" % (name, "tile" if tileable else "plain"))
     start = time.monotonic()
@@ -77,8 +74,18 @@ def synthesize(exemplar, name, tileable):
     warnings = tsops.op_warnings(err)
     if code != 0 or warnings or not os.path.isfile(result):
         tsops.die("synthesis from %s failed (exit %d):\n%s" % (exemplar, code, err))
-    return measure(exemplar, result, tileable), seconds
+    return result, seconds
 
+
+# Every result first, then all measured in one texsynth-measure run.
+made = []
+for path in exemplars:
+    name = os.path.basename(path)[:-4]
+    plain, plain_secs = synthesize(path, name, False)
+    tile, tile_secs = synthesize(path, name, True)
+    made.append((path, name, plain, plain_secs, tile, tile_secs))
+figures = tsops.run_measures(args.measure, [pair for path, _, plain, _, tile, _ in made
+                                            for pair in ((path, plain, False), (path, tile, True))])
 
 rows = []
 header = "%-12s %7s %9s %9s %6s %6s %6s | %9s %6s %6s %6s" % (
@@ -88,11 +95,9 @@ note("%-12s %7s %s | %s" % ("", "", ("plain %dx%d" % (args.size, args.size)).cen
                             "tileable".center(31)))
 note(header)
 note("-" * len(header))
-for path in exemplars:
-    name = os.path.basename(path)[:-4]
+for i, (path, name, _, plain_secs, _, tile_secs) in enumerate(made):
     w, h, _ = tsops.load(path)
-    plain, plain_secs = synthesize(path, name, False)
-    tile, tile_secs = synthesize(path, name, True)
+    plain, tile = figures[2 * i], figures[2 * i + 1]
     ratio = tile["coherence"] / plain["coherence"] if plain["coherence"] > 0 else float("inf")
     rows.append((name, plain, tile, ratio))
     note("%-12s %7s %9.3f %9.3f %6.3f %6.3f %6.1f | %9.3f %6.3f %6.2f %6.1f" % (

@@ -398,10 +398,20 @@ def wrap_seam_excess(w, h, px):
 def run_measure(measure_path, exemplar, result, tileable=False):
     """texsynth-measure --json [--tileable] EXEMPLAR RESULT as a dict of
     floats (NaN for null)."""
-    cmd = [measure_path, "--json"] + (["--tileable"] if tileable else []) + [exemplar, result]
+    return run_measures(measure_path, [(exemplar, result, tileable)])[0]
+
+
+def run_measures(measure_path, pairs):
+    """run_measure for each (exemplar, result, tileable) of `pairs`, in one
+    texsynth-measure run (argument lists joined by '+': one GEGL start-up):
+    a list of dicts."""
+    cmd = [measure_path]
+    for exemplar, result, tileable in pairs:
+        cmd += (["+"] if len(cmd) > 1 else []) + ["--json"] + (["--tileable"] if tileable else [])
+        cmd += [exemplar, result]
     proc = subprocess.run(cmd, capture_output=True, text=True)
-    if proc.returncode != 0:
+    rows = [json.loads(line) for line in proc.stdout.splitlines()] if proc.returncode == 0 else []
+    if proc.returncode != 0 or [r["result"] for r in rows] != [p[1] for p in pairs]:
         die("%s failed:\n%s%s" % (" ".join(cmd), proc.stdout, proc.stderr))
-    values = json.loads(proc.stdout)
-    return {k: (float("nan") if v is None else float(v)) for k, v in values.items()
-            if v is None or isinstance(v, (int, float))}
+    return [{k: (float("nan") if v is None else float(v)) for k, v in values.items()
+             if v is None or isinstance(v, (int, float))} for values in rows]
