@@ -1,8 +1,10 @@
 /* texsynth-measure: quality measures of a synthesised texture against its
- * exemplar (definitions in metrics.h), and with --shapes the shapes of
- * their phases (shape-metrics.h).
+ * exemplar (definitions in metrics.h), with --lattice how well it keeps
+ * the exemplar's repeat (lattice-metrics.h), and with --shapes the shapes
+ * of their phases (shape-metrics.h).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "image-io.h"
+#include "lattice-metrics.h"
 #include "metrics.h"
 #include "shape-metrics.h"
 
@@ -32,6 +34,8 @@ static const char usage_text[] =
   "  --tileable=y    ... vertically only (top/bottom edges)\n"
   "  --json          print a JSON object (with \"result\", its path) instead of\n"
   "                  name: value lines\n"
+  "  --lattice       also measure whether RESULT keeps EXEMPLAR's lattice (see\n"
+  "                  lattice below); EXEMPLAR must be at least 12x12\n"
   "  --shapes        measure the shapes of the phases of EXEMPLAR and of each\n"
   "                  RESULT instead (see Shapes below)\n"
   "  --phases=N      with --shapes: split the colours into N = 2 (default) or 3\n"
@@ -57,6 +61,17 @@ static const char usage_text[] =
   "                and anisotropy_exemplar: how strongly EXEMPLAR's edges favour\n"
   "                some orientations (0 = isotropic, 1 = all one way or on a\n"
   "                grid); axis-edges is meant for exemplars near 0\n"
+  "  lattice       with --lattice: R(d), the autocorrelation of lightness at\n"
+  "                offset d (mean removed, summed over the overlap, divided\n"
+  "                by its size and the variance: 1 at d = 0), has peaks (local\n"
+  "                maxima) 6-60 px long and at most half EXEMPLAR across and\n"
+  "                down; RESULT's R over EXEMPLAR's at the 4 highest,\n"
+  "                averaged: about 1 = lattice kept, about 0 = lost.\n"
+  "                Only for near-regular exemplars, whose highest peak\n"
+  "                (lattice-strength) is >= 0.3; else 'n/a' (JSON null).\n"
+  "                Each peak follows on a lattice-peak line (JSON:\n"
+  "                lattice_strength, lattice_peaks with dx, dy, exemplar,\n"
+  "                result)\n"
   "\n"
   "Shapes (--shapes): k-means on EXEMPLAR's Lab colours (started from the\n"
   "mean colours of N equal-count bands of its lightness) gives N phase\n"
@@ -275,11 +290,52 @@ measure_shapes (const char *const *paths, int n_paths, int phases, bool json)
   return code;
 }
 
-/* One result's figures, after its "result: PATH" line when there are
- * several; with --json one object per line. */
+/* --lattice: the figure (or why there is none), the exemplar's strength
+ * and its peaks with both images' autocorrelation there. */
 static void
-print_measures (const char *path, const TsMeasures *m, const TsImage *exemplar,
-                const TsImage *result, bool wrap_x, bool wrap_y, bool json, bool several)
+print_lattice (const TsLattice *lattice, bool json)
+{
+  if (json)
+    {
+      fputs (", \"lattice\": ", stdout);
+      print_number (lattice->lattice, true);
+      fputs (", \"lattice_strength\": ", stdout);
+      print_number (lattice->strength, true);
+      fputs (", \"lattice_peaks\": [", stdout);
+    }
+  else if (ts_lattice_near_regular (lattice))
+    printf ("lattice: %.4f\n", lattice->lattice);
+  else if (lattice->n_peaks == 0)
+    printf ("lattice: n/a (not near-regular: no peak at %d-%d px)\n", TS_LATTICE_MIN_LAG,
+            TS_LATTICE_MAX_LAG);
+  else
+    printf ("lattice: n/a (not near-regular: strongest peak %.4f < %.1f)\n", lattice->strength,
+            TS_LATTICE_NEAR_REGULAR);
+  if (!json)
+    printf ("lattice-strength: %.4f\n", lattice->strength);
+  for (size_t i = 0; i < lattice->n_peaks; i++)
+    {
+      const TsLatticePeak *p = &lattice->peak[i];
+      if (json)
+        printf ("%s{\"dx\": %d, \"dy\": %d, \"exemplar\": ", i ? ", " : "", p->dx, p->dy);
+      else
+        printf ("lattice-peak: dx %d dy %d exemplar ", p->dx, p->dy);
+      print_number (p->exemplar, json);
+      fputs (json ? ", \"result\": " : " result ", stdout);
+      print_number (p->result, json);
+      fputs (json ? "}" : "\n", stdout);
+    }
+  if (json)
+    fputs ("]", stdout);
+}
+
+/* One result's figures, after its "result: PATH" line when there are
+ * several; with --json one object per line. `lattice` is NULL without
+ * --lattice. */
+static void
+print_measures (const char *path, const TsMeasures *m, const TsLattice *lattice,
+                const TsImage *exemplar, const TsImage *result, bool wrap_x, bool wrap_y, bool json,
+                bool several)
 {
   bool first = true, tileable = wrap_x || wrap_y;
   if (json)
@@ -297,6 +353,8 @@ print_measures (const char *path, const TsMeasures *m, const TsImage *exemplar,
   print_value ("copy", m->copy, json, &first);
   print_value ("sharpness", m->sharpness, json, &first);
   print_value (json ? "axis_edges" : "axis-edges", m->axis_edges, json, &first);
+  if (lattice)
+    print_lattice (lattice, json);
   if (json)
     {
       print_value ("axis_edges_exemplar", m->axis_edges_exemplar, json, &first);
@@ -309,30 +367,75 @@ print_measures (const char *path, const TsMeasures *m, const TsImage *exemplar,
     }
 }
 
+/* --lattice: the exemplar's peaks, with a message if it cannot have any. */
+static bool
+lattice_of_exemplar (const char *path, const TsImage *exemplar, TsLattice *out)
+{
+  TsMeasureStatus status = ts_lattice_exemplar (exemplar, out);
+  if (status == TS_MEASURE_TOO_SMALL)
+    fprintf (stderr,
+             "texsynth-measure: '%s' is %zux%zu pixels; --lattice needs an exemplar of at "
+             "least %dx%d\n",
+             path, exemplar->width, exemplar->height, TS_LATTICE_MIN_SIDE, TS_LATTICE_MIN_SIDE);
+  else if (status != TS_MEASURE_OK)
+    fail ("%s", "out of memory: the exemplar is too large for --lattice");
+  return status == TS_MEASURE_OK;
+}
+
+/* --lattice: the result's autocorrelation at the exemplar's peaks, with a
+ * message if it is too small to hold their offsets. */
+static bool
+lattice_of_result (const char *path, const TsImage *result, TsLattice *lattice)
+{
+  size_t need_w, need_h;
+  if (ts_lattice_result (result, lattice) == TS_MEASURE_OK)
+    return true;
+  ts_lattice_min_result_size (lattice, &need_w, &need_h);
+  fprintf (stderr,
+           "texsynth-measure: '%s' is %zux%zu pixels; the exemplar's lattice peaks (offsets up "
+           "to %zu px across and %zu px down) need a result of at least %zux%zu\n",
+           path, result->width, result->height, need_w / 2, need_h / 2, need_w, need_h);
+  return false;
+}
+
 /* paths[1..] each against paths[0], read once; all are measured before
  * any is printed, so a failure prints no figures. */
 static int
-measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y, bool json,
-                 bool several)
+measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y, bool lattice,
+                 bool json, bool several)
 {
   int n_results = n_paths - 1, measured = 0, code = EXIT_USAGE;
   TsMeasures *m = calloc ((size_t) n_results, sizeof *m);
   TsImage *sizes = calloc ((size_t) n_results, sizeof *sizes);
+  TsLattice *lattices = lattice ? calloc ((size_t) n_results, sizeof *lattices) : NULL;
+  TsLattice exemplar_lattice;
   TsImage exemplar = { 0 }, result = { 0 };
 
-  if (!m || !sizes)
+  if (!m || !sizes || (lattice && !lattices))
     {
       free (m);
       free (sizes);
+      free (lattices);
       return fail ("%s", "out of memory");
     }
   ts_io_init ();
-  if (load (paths[0], &exemplar))
+  if (load (paths[0], &exemplar)
+      && (!lattice || lattice_of_exemplar (paths[0], &exemplar, &exemplar_lattice)))
     for (; measured < n_results; measured++)
       {
         TsMeasureStatus status = TS_MEASURE_OK;
         if (!load (paths[1 + measured], &result))
           break;
+        if (lattice)
+          {
+            lattices[measured] = exemplar_lattice;
+            if (!lattice_of_result (paths[1 + measured], &result, &lattices[measured]))
+              {
+                free (result.pixels);
+                result.pixels = NULL;
+                break;
+              }
+          }
         status = ts_measure_all (&exemplar, &result, wrap_x, wrap_y, &m[measured]);
         sizes[measured] = (TsImage) { result.width, result.height, NULL };
         free (result.pixels);
@@ -348,13 +451,14 @@ measure_results (const char *const *paths, int n_paths, bool wrap_x, bool wrap_y
   if (measured == n_results)
     {
       for (int i = 0; i < n_results; i++)
-        print_measures (paths[1 + i], &m[i], &exemplar, &sizes[i], wrap_x, wrap_y, json,
-                        several || n_results > 1);
+        print_measures (paths[1 + i], &m[i], lattice ? &lattices[i] : NULL, &exemplar,
+                        &sizes[i], wrap_x, wrap_y, json, several || n_results > 1);
       code = fflush (stdout) == 0 ? EXIT_SUCCESS : EXIT_USAGE;
     }
   free (exemplar.pixels);
   free (m);
   free (sizes);
+  free (lattices);
   return code;
 }
 
@@ -367,6 +471,7 @@ measure_arguments (int argc, char **argv, bool several)
   const char *const *paths = (const char *const *) argv + 1;
   int n_paths = 0, phases = TS_SHAPE_DEFAULT_PHASES;
   bool json = false, wrap_x = false, wrap_y = false, options_done = false, shapes = false;
+  bool lattice = false;
 
   for (int i = 1; i < argc; i++)
     {
@@ -384,6 +489,8 @@ measure_arguments (int argc, char **argv, bool several)
         json = true;
       else if (strcmp (a, "--shapes") == 0)
         shapes = true;
+      else if (strcmp (a, "--lattice") == 0)
+        lattice = true;
       else if (strcmp (a, "--phases=2") == 0 || strcmp (a, "--phases=3") == 0)
         phases = a[9] - '0';
       else if (strncmp (a, "--phases", 8) == 0)
@@ -404,13 +511,15 @@ measure_arguments (int argc, char **argv, bool several)
     return usage_error ("%s", "--phases needs --shapes");
   if ((wrap_x || wrap_y) && shapes)
     return usage_error ("%s", "--tileable does not apply to --shapes");
+  if (lattice && shapes)
+    return usage_error ("%s", "--lattice does not apply to --shapes");
   if (n_paths >= 2 && shapes)
     return measure_shapes (paths, n_paths, phases, json);
   if (n_paths < 2)
     return usage_error ("%s", n_paths == 0 ? "missing EXEMPLAR and RESULT"
                                            : "missing RESULT (expected EXEMPLAR RESULT)");
 
-  return measure_results (paths, n_paths, wrap_x, wrap_y, json, several);
+  return measure_results (paths, n_paths, wrap_x, wrap_y, lattice, json, several);
 }
 
 int
