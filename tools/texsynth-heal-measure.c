@@ -14,10 +14,14 @@
 static const char usage_text[] =
   "Usage: texsynth-heal-measure [--json] ORIGINAL MASK RESULT\n"
   "       texsynth-heal-measure [--json] --hole-from-alpha ORIGINAL RESULT\n"
+  "       texsynth-heal-measure ARGUMENTS + ARGUMENTS...\n"
   "Measures how well RESULT fills the hole of ORIGINAL: the MASK's pixels\n"
   "with L * alpha >= 50 (white on black), or the pixels of ORIGINAL that are\n"
   "not fully opaque. CIE Lab, 7x7 windows; \"near\" = known pixels within 64\n"
-  "pixels of the hole.\n"
+  "pixels of the hole. Argument lists joined by '+' (a file named '+' is\n"
+  "'./+') are measured in turn in one process, each after a 'result: PATH'\n"
+  "line (with --json, one object per line, in order); the first that fails\n"
+  "ends the run.\n"
   "\n"
   "  coherence, completeness  mean RMS Lab distance from result windows at\n"
   "                least half in the hole to the nearest hole-free original\n"
@@ -48,8 +52,10 @@ load (const char *path, TsImage *image)
   return false;
 }
 
-int
-main (int argc, char **argv)
+/* One argument list: argv[1..argc-1], argv[0] unused. `several`: there
+ * are other lists, so the text figures are named. */
+static int
+measure_arguments (int argc, char **argv, bool several)
 {
   const char *paths[3];
   int n = 0, code = EXIT_USAGE;
@@ -101,6 +107,8 @@ main (int argc, char **argv)
                   "or no hole-free window near it");
       goto out;
     }
+  if (several && !json)
+    printf ("result: %s\n", paths[from_alpha ? 1 : 2]);
   if (json)
     printf ("{\"fill_bds\": %.6g, \"coherence\": %.6g, \"completeness\": %.6g, "
             "\"boundary\": %.6g, \"boundary_original\": %.6g, \"sharpness\": %.6g, "
@@ -120,5 +128,24 @@ out:
   free (original.pixels);
   free (mask.pixels);
   free (result.pixels);
+  return code;
+}
+
+int
+main (int argc, char **argv)
+{
+  int start = 1, code = EXIT_SUCCESS;
+  bool several = false;
+
+  for (int i = 1; i < argc; i++)
+    several = several || strcmp (argv[i], "+") == 0;
+  /* Each list's arguments are argv[start..i-1]; argv[start - 1], the
+   * program's name or a '+', stands in as its argv[0]. */
+  for (int i = 1; i <= argc && code == EXIT_SUCCESS; i++)
+    if (i == argc || strcmp (argv[i], "+") == 0)
+      {
+        code = measure_arguments (i - start + 1, argv + start - 1, several);
+        start = i + 1;
+      }
   return code;
 }
