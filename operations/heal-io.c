@@ -110,8 +110,7 @@ write_hole (GeglBuffer *output, const GeglRectangle *box, const GeglRectangle *c
       return FALSE;
     }
   gegl_buffer_get (output, &abs, 1.0, format, bytes, GEGL_AUTO_ROWSTRIDE, GEGL_ABYSS_NONE);
-  babl_process (babl_fish (babl_format (TS_OP_FORMAT), format), result->pixels, converted,
-                (long) n);
+  ts_op_lab_to_format (result->pixels, format, converted, n);
   for (gsize y = 0; y < result->height; y++)
     for (gsize x = 0; x < result->width; x++)
       {

@@ -7,6 +7,7 @@
 #include <glib/gi18n-lib.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 void
 ts_op_bind_textdomain (void)
@@ -174,6 +175,33 @@ ts_op_progress_func (double fraction, const char *stage, void *user_data)
   return true; /* GEGL 0.4 has no way to cancel an op from outside */
 }
 
+const Babl *
+ts_op_source_space (GeglOperation *operation, const gchar *pad)
+{
+  const Babl *source = gegl_operation_get_source_format (operation, pad);
+  const Babl *space = source ? babl_format_get_space (source) : NULL;
+
+  /* Results are in colour: a grey or CMYK source's are sRGB. */
+  if (space && (babl_space_is_gray (space) || babl_space_is_cmyk (space)))
+    return NULL;
+  return space;
+}
+
+const Babl *
+ts_op_result_format (GeglOperation *operation)
+{
+  const Babl *source = gegl_operation_get_source_format (operation, "input");
+  const Babl *space = ts_op_source_space (operation, "input");
+  const char *model = source ? babl_get_name (babl_format_get_model (source)) : "";
+  static const char *const linear_models[] = { "RGB", "RGBA", "RaGaBaA", "Y", "YA", "YaA" };
+  const char *encoding = strchr (model, '~') ? "R~G~B~A float" : "R'G'B'A float";
+
+  for (size_t i = 0; i < G_N_ELEMENTS (linear_models); i++)
+    if (strcmp (model, linear_models[i]) == 0)
+      encoding = "RGBA float";
+  return babl_format_with_space (encoding, space);
+}
+
 void
 ts_op_write_output (GeglBuffer          *output,
                     const GeglRectangle *roi,
@@ -187,19 +215,17 @@ ts_op_write_output (GeglBuffer          *output,
 
   if (!gegl_rectangle_intersect (&part, &whole, roi))
     return;
-  gegl_buffer_set (output, &part, 0, babl_format (TS_OP_FORMAT),
-                   (const guchar *) image->pixels + (gsize) (part.y - y) * stride
-                     + (gsize) (part.x - x) * TS_CHANNELS * sizeof (float),
-                   (gint) stride);
+  ts_op_write_lab (output, &part,
+                   (const float *) ((const guchar *) image->pixels + (gsize) (part.y - y) * stride
+                                    + (gsize) (part.x - x) * TS_CHANNELS * sizeof (float)),
+                   stride);
 }
 
 void
 ts_op_prepare (GeglOperation *operation)
 {
-  const Babl *format = babl_format (TS_OP_FORMAT);
-
-  gegl_operation_set_format (operation, "input", format);
-  gegl_operation_set_format (operation, "output", format);
+  gegl_operation_set_format (operation, "input", babl_format (TS_OP_FORMAT));
+  gegl_operation_set_format (operation, "output", ts_op_result_format (operation));
 }
 
 GeglRectangle

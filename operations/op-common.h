@@ -78,16 +78,26 @@ void ts_op_progress_init  (TsOpProgress *progress, GeglOperation *operation);
 void ts_op_progress_clear (TsOpProgress *progress);
 bool ts_op_progress_func  (double fraction, const char *stage, void *user_data);
 
-/* Copy the part of `image`, placed with its top-left pixel at (x, y),
- * that lies in `roi` into `output`. */
+/* The colour space of what is connected to `pad`: NULL (sRGB) if nothing
+ * is, or if its space is grey or CMYK (results are in colour). */
+const Babl *ts_op_source_space (GeglOperation *operation, const gchar *pad);
+
+/* The format of a colour result: float RGBA in the "input" pad's
+ * ts_op_source_space, with the source's curve: none for a linear source,
+ * else the space's (or the sRGB curve for a "~" source). GEGL's own ops
+ * keep the source's space too. */
+const Babl *ts_op_result_format (GeglOperation *operation);
+
+/* Copy the part of `image` (Lab), placed with its top-left pixel at
+ * (x, y), that lies in `roi` into `output`, in the output's format. */
 void ts_op_write_output (GeglBuffer          *output,
                          const GeglRectangle *roi,
                          const TsImage       *image,
                          gint                 x,
                          gint                 y);
 
-/* Class methods the whole-image ops share: input and output in the
- * engine's format; all of the input for any output; the whole output
+/* Class methods the whole-image ops share: input in the engine's format,
+ * output in ts_op_result_format; all of the input for any output; the whole output
  * cached and invalidated at once, since synthesis is global. */
 void          ts_op_prepare (GeglOperation *operation);
 GeglRectangle ts_op_get_required_for_output (GeglOperation *operation, const gchar *input_pad,

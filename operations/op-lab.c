@@ -1,4 +1,4 @@
-/* Exemplar pixels to CIE Lab with fixed arithmetic (see op-lab.h).
+/* Pixels to CIE Lab and back with fixed arithmetic (see op-lab.h).
  * SPDX-License-Identifier: LGPL-3.0-or-later
  */
 #include "op-lab.h"
@@ -36,6 +36,7 @@ static const Layout layouts[] =
   { "Y~A",     2, TRUE,  TRUE,  TRUE,  FALSE },
 };
 
+/* A format as read and written here. */
 typedef struct
 {
   const Layout *layout;
@@ -43,7 +44,7 @@ typedef struct
   Curve         curve;
   double        gamma;
   double        rgb_to_xyz[9]; /* D50-adapted, as babl's spaces are */
-} Decoder;
+} Coding;
 
 /* ICC's D50 white, which babl's Lab uses too. */
 static const double d50[3] = { 0.9642, 1.0, 0.8249 };
@@ -126,9 +127,9 @@ space_matrix (const Babl *space, double *out)
   return TRUE;
 }
 
-/* How to decode `format` here; FALSE if babl must do it. */
+/* How to read and write `format` here; FALSE if babl must do it. */
 static gboolean
-decoder_for (const Babl *format, Decoder *decoder)
+coding_for (const Babl *format, Coding *coding)
 {
   const char *encoding = babl_format_get_encoding (format);
   const char *type = encoding ? strrchr (encoding, ' ') : NULL;
@@ -140,57 +141,57 @@ decoder_for (const Babl *format, Decoder *decoder)
     return FALSE;
   length = (size_t) (type - encoding);
   type++;
-  decoder->layout = NULL;
+  coding->layout = NULL;
   for (size_t i = 0; i < G_N_ELEMENTS (layouts); i++)
     if (strlen (layouts[i].components) == length &&
         strncmp (layouts[i].components, encoding, length) == 0)
-      decoder->layout = &layouts[i];
-  if (!decoder->layout)
+      coding->layout = &layouts[i];
+  if (!coding->layout)
     return FALSE;
   if (strcmp (type, "u8") == 0)
-    decoder->bytes = 1;
+    coding->bytes = 1;
   else if (strcmp (type, "u16") == 0)
-    decoder->bytes = 2;
+    coding->bytes = 2;
   else if (strcmp (type, "float") == 0)
-    decoder->bytes = 4;
+    coding->bytes = 4;
   else
     return FALSE;
-  if (babl_format_get_bytes_per_pixel (format) != decoder->layout->n * decoder->bytes)
+  if (babl_format_get_bytes_per_pixel (format) != coding->layout->n * coding->bytes)
     return FALSE;
 
   babl_space_get (space, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &red, &green, &blue);
   green = green ? green : red;
   blue = blue ? blue : red;
-  decoder->gamma = 1.0;
-  if (decoder->layout->linear)
-    decoder->curve = CURVE_LINEAR;
-  else if (decoder->layout->perceptual)
-    decoder->curve = CURVE_SRGB;
+  coding->gamma = 1.0;
+  if (coding->layout->linear)
+    coding->curve = CURVE_LINEAR;
+  else if (coding->layout->perceptual)
+    coding->curve = CURVE_SRGB;
   else if (red != green || red != blue)
     return FALSE;
   else if (red == babl_trc ("sRGB"))
-    decoder->curve = CURVE_SRGB;
+    coding->curve = CURVE_SRGB;
   else if (red == babl_trc ("linear"))
-    decoder->curve = CURVE_LINEAR;
-  else if ((decoder->gamma = babl_space_get_gamma (space)) > 0.0)
-    decoder->curve = CURVE_GAMMA;
+    coding->curve = CURVE_LINEAR;
+  else if ((coding->gamma = babl_space_get_gamma (space)) > 0.0)
+    coding->curve = CURVE_GAMMA;
   else
     return FALSE;
-  return space_matrix (space, decoder->rgb_to_xyz);
+  return space_matrix (space, coding->rgb_to_xyz);
 }
 
 static double
-to_linear (const Decoder *decoder, double v)
+to_linear (const Coding *coding, double v)
 {
   double a = fabs (v), linear;
 
-  switch (decoder->curve)
+  switch (coding->curve)
     {
     case CURVE_SRGB:
       linear = ts_srgb_to_linear (a);
       break;
     case CURVE_GAMMA:
-      linear = pow (a, decoder->gamma);
+      linear = pow (a, coding->gamma);
       break;
     default:
       return v;
@@ -200,9 +201,9 @@ to_linear (const Decoder *decoder, double v)
 
 /* Component `c` of the pixel at `p`, as stored. */
 static double
-component (const Decoder *decoder, const guchar *p, int c)
+component (const Coding *coding, const guchar *p, int c)
 {
-  switch (decoder->bytes)
+  switch (coding->bytes)
     {
     case 1:
       return p[c] / 255.0;
@@ -222,21 +223,123 @@ component (const Decoder *decoder, const guchar *p, int c)
 }
 
 static void
-decode (const Decoder *decoder, const guchar *raw, size_t n, float *lab)
+decode (const Coding *coding, const guchar *raw, size_t n, float *lab)
 {
-  const Layout *layout = decoder->layout;
-  size_t stride = (size_t) layout->n * (size_t) decoder->bytes;
+  const Layout *layout = coding->layout;
+  size_t stride = (size_t) layout->n * (size_t) coding->bytes;
 
   for (size_t i = 0; i < n; i++, raw += stride, lab += 4)
     {
       double rgb[3], xyz[3];
 
       for (int c = 0; c < 3; c++)
-        rgb[c] = to_linear (decoder, component (decoder, raw, layout->grey ? 0 : c));
-      mat_apply (decoder->rgb_to_xyz, rgb, xyz);
+        rgb[c] = to_linear (coding, component (coding, raw, layout->grey ? 0 : c));
+      mat_apply (coding->rgb_to_xyz, rgb, xyz);
       ts_xyz_to_lab (xyz, d50, lab);
-      lab[3] = layout->alpha ? (float) component (decoder, raw, layout->n - 1) : 1.0f;
+      lab[3] = layout->alpha ? (float) component (coding, raw, layout->n - 1) : 1.0f;
     }
+}
+
+static double
+from_linear (const Coding *coding, double v)
+{
+  double a = fabs (v), encoded;
+
+  switch (coding->curve)
+    {
+    case CURVE_SRGB:
+      encoded = ts_linear_to_srgb (a);
+      break;
+    case CURVE_GAMMA:
+      encoded = pow (a, 1.0 / coding->gamma);
+      break;
+    default:
+      return v;
+    }
+  return v < 0.0 ? -encoded : encoded;
+}
+
+/* Integers as babl stores them: clamped to 0..1, rounded half up; NaN is 0. */
+static void
+store (const Coding *coding, guchar *p, int c, double v)
+{
+  double clamped = v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+
+  switch (coding->bytes)
+    {
+    case 1:
+      p[c] = (guchar) (clamped * 255.0 + 0.5);
+      break;
+    case 2:
+      {
+        uint16_t u = (uint16_t) (clamped * 65535.0 + 0.5);
+        memcpy (p + 2 * c, &u, sizeof u);
+      }
+      break;
+    default:
+      {
+        float f = (float) v;
+        memcpy (p + 4 * c, &f, sizeof f);
+      }
+    }
+}
+
+static void
+encode (const Coding *coding, const double *xyz_to_rgb, const float *lab, size_t n, guchar *raw)
+{
+  const Layout *layout = coding->layout;
+  size_t stride = (size_t) layout->n * (size_t) coding->bytes;
+
+  for (size_t i = 0; i < n; i++, raw += stride, lab += 4)
+    {
+      double rgb[3], xyz[3];
+
+      ts_lab_to_xyz (lab, d50, xyz);
+      if (layout->grey)
+        /* rgb_to_xyz's Y row sums to 1: grey's linear value is Y. */
+        store (coding, raw, 0, from_linear (coding, xyz[1]));
+      else
+        {
+          mat_apply (xyz_to_rgb, xyz, rgb);
+          for (int c = 0; c < 3; c++)
+            store (coding, raw, c, from_linear (coding, rgb[c]));
+        }
+      if (layout->alpha)
+        store (coding, raw, layout->n - 1, lab[3]);
+    }
+}
+
+void
+ts_op_lab_to_format (const float *lab, const Babl *format, void *out, size_t n)
+{
+  Coding coding;
+  double xyz_to_rgb[9];
+
+  if (coding_for (format, &coding) && mat_invert (coding.rgb_to_xyz, xyz_to_rgb))
+    encode (&coding, xyz_to_rgb, lab, n, out);
+  else
+    babl_process (babl_fish (babl_format (TS_OP_FORMAT), format), lab, out, (long) n);
+}
+
+void
+ts_op_write_lab (GeglBuffer *buffer, const GeglRectangle *rect, const float *lab, size_t stride)
+{
+  const Babl *format = gegl_buffer_get_format (buffer);
+  size_t bpp = (size_t) babl_format_get_bytes_per_pixel (format);
+  size_t width = (size_t) rect->width, height = (size_t) rect->height;
+  guchar *raw = g_try_malloc (width * height * bpp);
+
+  if (!raw)
+    {
+      /* Short of memory: babl converts on the way in instead. */
+      gegl_buffer_set (buffer, rect, 0, babl_format (TS_OP_FORMAT), lab, (gint) stride);
+      return;
+    }
+  for (size_t y = 0; y < height; y++)
+    ts_op_lab_to_format ((const float *) ((const guchar *) lab + y * stride), format,
+                         raw + y * width * bpp, width);
+  gegl_buffer_set (buffer, rect, 0, format, raw, GEGL_AUTO_ROWSTRIDE);
+  g_free (raw);
 }
 
 void
@@ -244,15 +347,15 @@ ts_op_read_lab (GeglBuffer *buffer, const GeglRectangle *rect, float *lab)
 {
   const Babl *format = gegl_buffer_get_format (buffer);
   size_t n = (size_t) rect->width * (size_t) rect->height;
-  Decoder decoder;
+  Coding coding;
   guchar *raw = NULL;
 
   /* The buffer's own format: a plain copy, no babl path involved. */
-  if (decoder_for (format, &decoder) &&
+  if (coding_for (format, &coding) &&
       (raw = g_try_malloc (n * (size_t) babl_format_get_bytes_per_pixel (format))))
     {
       gegl_buffer_get (buffer, rect, 1.0, format, raw, GEGL_AUTO_ROWSTRIDE, GEGL_ABYSS_NONE);
-      decode (&decoder, raw, n, lab);
+      decode (&coding, raw, n, lab);
       g_free (raw);
       return;
     }

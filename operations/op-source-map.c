@@ -1,7 +1,7 @@
 /* The synthesis's layout as a gegl:map-absolute map (see op-source-map.h).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "op-source-map.h"
-#include "op-lab.h"
+#include "op-common.h"
 
 #include <gegl-plugin.h>
 
@@ -14,10 +14,9 @@ ts_op_source_map_format (void)
 void
 ts_op_prepare_source_map (GeglOperation *operation, gboolean source_map)
 {
-  const Babl *lab = babl_format (TS_OP_FORMAT);
-
-  gegl_operation_set_format (operation, "input", lab);
-  gegl_operation_set_format (operation, "output", source_map ? ts_op_source_map_format () : lab);
+  gegl_operation_set_format (operation, "input", babl_format (TS_OP_FORMAT));
+  gegl_operation_set_format (operation, "output", source_map ? ts_op_source_map_format ()
+                                                             : ts_op_result_format (operation));
 }
 
 gboolean

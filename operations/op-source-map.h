@@ -21,7 +21,7 @@
 const Babl *ts_op_source_map_format (void);
 
 /* Input in the engine's format; output in the source-map format when
- * `source_map`, else in the engine's. */
+ * `source_map`, else in ts_op_result_format. */
 void ts_op_prepare_source_map (GeglOperation *operation, gboolean source_map);
 
 /* Writes the part of a `width` x `height` source map (2 int32 per pixel,

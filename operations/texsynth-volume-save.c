@@ -225,11 +225,12 @@ all_opaque (const guint8 *rgba, size_t size)
   return TRUE;
 }
 
-/* The volume as R'G'B'A u8 voxels (g_free it); *opaque if every voxel is. */
+/* The volume as R'G'B'A u8 voxels in `space` (g_free it); *opaque if
+ * every voxel is. */
 static guint8 *
-to_rgba8 (const TsVolumeEntry *entry, gboolean *opaque, TsError *error)
+to_rgba8 (const TsVolumeEntry *entry, const Babl *space, gboolean *opaque, TsError *error)
 {
-  const Babl *fish = babl_fish (babl_format (TS_OP_FORMAT), babl_format (RGBA_FORMAT));
+  const Babl *format = babl_format_with_space (RGBA_FORMAT, space);
   size_t size = ts_volume_entry_size (entry), plane = size * size;
   const float *voxels = ts_volume_entry_voxels (entry);
   guint8 *rgba = g_try_malloc (plane * size * 4);
@@ -243,7 +244,7 @@ to_rgba8 (const TsVolumeEntry *entry, gboolean *opaque, TsError *error)
       return NULL;
     }
   for (size_t z = 0; z < size; z++)
-    babl_process (fish, voxels + z * plane * TS_CHANNELS, rgba + z * plane * 4, (long) plane);
+    ts_op_lab_to_format (voxels + z * plane * TS_CHANNELS, format, rgba + z * plane * 4, plane);
   *opaque = all_opaque (rgba, size);
   return rgba;
 }
@@ -299,7 +300,7 @@ write_volume_file (GeglProperties *o, const Target *target, guint8 *rgba, size_t
 
 static gboolean
 write_pngs (GeglOperation *operation, GeglProperties *o, const Target *target,
-            const guint8 *rgba, size_t size, gboolean opaque, TsError *error)
+            const guint8 *rgba, const Babl *space, size_t size, gboolean opaque, TsError *error)
 {
   gboolean atlas = target->format == TEXSYNTH_VOLUME_SAVE_FORMAT_ATLAS;
   size_t width = size, height = size, columns, rows, images = atlas ? 1 : size;
@@ -326,7 +327,7 @@ write_pngs (GeglOperation *operation, GeglProperties *o, const Target *target,
       return FALSE;
     }
 
-  ts_png_set_init (&set);
+  ts_png_set_init (&set, space);
   for (size_t i = 0; i < images && ok; i++)
     {
       gchar *name = atlas ? g_strdup (target->path)
@@ -356,6 +357,9 @@ save (GeglOperation *operation, GeglBuffer *input, GeglBuffer *aux, GeglBuffer *
   Target target;
   guint8 *rgba = NULL;
   gboolean opaque = TRUE, ok;
+  /* The exemplar's space, or with a map the map's: files hold their bytes. */
+  const Babl *space = ts_op_source_space (operation, ts_volume_map_connected (operation)
+                                                     ? TS_VOLUME_MAP_PAD : "input");
 
   TS_VOLUME_OP_FILL_PARAMS (o, &params);
   ok = resolve_target (o, &target, &error) && check_content (operation, o, &target, &error);
@@ -372,12 +376,13 @@ save (GeglOperation *operation, GeglBuffer *input, GeglBuffer *aux, GeglBuffer *
     }
   else if (entry && ts_volume_map_connected (operation))
     {
-      ok = (rgba = ts_volume_map_lay_out (operation, entry, babl_format (RGBA_FORMAT), &error))
+      const Babl *format = babl_format_with_space (RGBA_FORMAT, space);
+      ok = (rgba = ts_volume_map_lay_out (operation, entry, format, &error))
            != NULL;
       opaque = ok && all_opaque (rgba, ts_volume_entry_size (entry));
     }
   else
-    ok = entry && (rgba = to_rgba8 (entry, &opaque, &error));
+    ok = entry && (rgba = to_rgba8 (entry, space, &opaque, &error));
   if (ok && rgba)
     {
       size_t size = ts_volume_entry_size (entry);
@@ -387,7 +392,7 @@ save (GeglOperation *operation, GeglBuffer *input, GeglBuffer *aux, GeglBuffer *
           target.format == TEXSYNTH_VOLUME_SAVE_FORMAT_DDS)
         ok = write_volume_file (o, &target, rgba, size, opaque, &error);
       else
-        ok = write_pngs (operation, o, &target, rgba, size, opaque, &error);
+        ok = write_pngs (operation, o, &target, rgba, space, size, opaque, &error);
     }
   ts_volume_cache_release (entry);
   g_free (rgba);
@@ -407,13 +412,17 @@ pad_buffer (GeglOperation *operation, GeglOperationContext *context, const gchar
   GeglNode *source = gegl_operation_get_source_node (operation, pad);
   GeglRectangle rect;
   GeglBuffer *buffer;
+  const Babl *format;
 
   if (object)
     return GEGL_BUFFER (object);
   if (!source)
     return NULL;
   rect = ts_volume_op_required_input (operation, pad);
-  buffer = gegl_buffer_new (&rect, babl_format (TS_OP_FORMAT));
+  /* In the source's own format, so that op-lab.c reads it as volume-slice
+   * reads its pads (and they share the cached volume). */
+  format = gegl_operation_get_source_format (operation, pad);
+  buffer = gegl_buffer_new (&rect, format ? format : babl_format (TS_OP_FORMAT));
   if (rect.width > 0 && rect.height > 0)
     gegl_node_blit_buffer (source, buffer, &rect, 0, GEGL_ABYSS_NONE);
   return buffer;

@@ -117,14 +117,22 @@ get_bounding_box (GeglOperation *operation)
   return box;
 }
 
+/* A map's values pass in its own space. */
+static const Babl *
+map_format (GeglOperation *operation)
+{
+  return babl_format_with_space (MAP_FORMAT, ts_op_source_space (operation, TS_VOLUME_MAP_PAD));
+}
+
 static void
 prepare (GeglOperation *operation)
 {
   ts_volume_op_prepare_inputs (operation);
-  gegl_operation_set_format (operation, TS_VOLUME_MAP_PAD, babl_format (MAP_FORMAT));
+  gegl_operation_set_format (operation, TS_VOLUME_MAP_PAD, map_format (operation));
+  /* Colours in the input's space, as the other ops give them. */
   gegl_operation_set_format (operation, "output",
-                             babl_format (ts_volume_map_connected (operation) ? MAP_FORMAT
-                                                                             : TS_OP_FORMAT));
+                             ts_volume_map_connected (operation) ? map_format (operation)
+                                                                 : ts_op_result_format (operation));
 }
 
 static void
@@ -164,9 +172,10 @@ slice_index (GeglProperties *o, size_t *index, TsError *error)
   return FALSE;
 }
 
-/* Write the slices of `voxels` (VOXEL_BYTES each, in `format`) that
- * `roi` shows: one slice, or every cell of the atlas (unused cells stay
- * transparent). One slice at a time, so no atlas-sized copy is needed. */
+/* Write the slices of `voxels` (VOXEL_BYTES each, in `format`, or in Lab
+ * when `format` is NULL) that `roi` shows: one slice, or every cell of
+ * the atlas (unused cells stay transparent). One slice at a time, so no
+ * atlas-sized copy is needed. */
 static gboolean
 write_slices (GeglProperties *o, const float *voxels, size_t size, const Babl *format,
               size_t index, GeglBuffer *output, const GeglRectangle *roi, TsError *error)
@@ -198,10 +207,12 @@ write_slices (GeglProperties *o, const float *voxels, size_t size, const Babl *f
       GeglRectangle shown;
       ts_volume_extract_slice (voxels, size, VOXEL_BYTES, o->axis, index + i, slice.pixels);
       gegl_rectangle_intersect (&shown, &cell, roi);
-      gegl_buffer_set (output, &shown, 0, format,
-                       slice.pixels + ((size_t) (shown.y - cell.y) * size
-                                       + (size_t) (shown.x - cell.x)) * TS_CHANNELS,
-                       (gint) (size * VOXEL_BYTES));
+      const float *first = slice.pixels + ((size_t) (shown.y - cell.y) * size
+                                           + (size_t) (shown.x - cell.x)) * TS_CHANNELS;
+      if (format)
+        gegl_buffer_set (output, &shown, 0, format, first, (gint) (size * VOXEL_BYTES));
+      else
+        ts_op_write_lab (output, &shown, first, size * VOXEL_BYTES);
     }
   g_free (slice.pixels);
   return TRUE;
@@ -232,12 +243,12 @@ process (GeglOperation       *operation,
   if (ok)
     entry = ts_volume_op_acquire (operation, input, aux, aux2, &params, o->free_axis, &error);
   if (entry && map)
-    ok = (laid = ts_volume_map_lay_out (operation, entry, babl_format (MAP_FORMAT), &error))
-         && write_slices (o, laid, ts_volume_entry_size (entry), babl_format (MAP_FORMAT), index,
+    ok = (laid = ts_volume_map_lay_out (operation, entry, map_format (operation), &error))
+         && write_slices (o, laid, ts_volume_entry_size (entry), map_format (operation), index,
                           output, roi, &error);
   else
     ok = entry && write_slices (o, ts_volume_entry_voxels (entry), ts_volume_entry_size (entry),
-                                babl_format (TS_OP_FORMAT), index, output, roi, &error);
+                                NULL, index, output, roi, &error);
   g_free (laid);
   ts_volume_cache_release (entry);
 

@@ -18,8 +18,9 @@ static const guint8 png_signature[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, 
 static const guint8 png_end[12] = { 0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82 };
 
 void
-ts_png_set_init (TsPngSet *set)
+ts_png_set_init (TsPngSet *set, const Babl *space)
 {
+  set->space = space;
   set->targets = g_ptr_array_new_with_free_func (g_free);
   set->temps = g_ptr_array_new_with_free_func (free); /* ts_atomic_reserve's */
 }
@@ -101,8 +102,10 @@ ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
   g_ptr_array_add (set->temps, temp);
 
   /* An RGB buffer makes png-save write an RGB file. */
-  buffer = gegl_buffer_new (&rect, babl_format (opaque ? "R'G'B' u8" : "R'G'B'A u8"));
-  gegl_buffer_set (buffer, &rect, 0, babl_format ("R'G'B'A u8"), rgba, (gint) width * 4);
+  buffer = gegl_buffer_new (&rect, babl_format_with_space (opaque ? "R'G'B' u8" : "R'G'B'A u8",
+                                                           set->space));
+  gegl_buffer_set (buffer, &rect, 0, babl_format_with_space ("R'G'B'A u8", set->space), rgba,
+                   (gint) width * 4);
   save_png (temp, buffer);
   g_object_unref (buffer);
   return check_png (temp, target, width, height, error);

@@ -14,14 +14,18 @@
 
 typedef struct
 {
-  GPtrArray *targets; /* gchar *, owned */
-  GPtrArray *temps;   /* gchar *, owned; same order */
+  GPtrArray  *targets; /* gchar *, owned */
+  GPtrArray  *temps;   /* gchar *, owned; same order */
+  const Babl *space;   /* of every image; NULL = sRGB */
 } TsPngSet;
 
-void ts_png_set_init (TsPngSet *set);
+/* A set of images in `space` (NULL = sRGB): png-save tags a file in
+ * another space with its profile. */
+void ts_png_set_init (TsPngSet *set, const Babl *space);
 
-/* Write `rgba` (R'G'B'A u8, width x height, rows width * 4 bytes apart)
- * to a temporary file for `target`; as RGB when `opaque`. */
+/* Write `rgba` (R'G'B'A u8 in the set's space, width x height, rows
+ * width * 4 bytes apart) to a temporary file for `target`; as RGB when
+ * `opaque`. */
 gboolean ts_png_set_add (TsPngSet *set, const gchar *target, const guint8 *rgba,
                          size_t width, size_t height, gboolean opaque, TsError *error);
 

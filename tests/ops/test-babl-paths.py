@@ -37,8 +37,10 @@ def child(fmt, out):
     for op, props in (("texsynth:synthesize", dict(width=64, height=64, seed=11, quality=1)),
                       ("texsynth:tileable", dict(seed=5, quality=1))):
         graph, _, node = tsops.op_on_buffer(exemplar, op, **props)
-        # The ops' own format: read without any conversion.
-        digest.update(tsops.render_bytes(node, "CIE Lab alpha float")[2])
+        # The ops' own format (float RGBA with the exemplar's curve, in its
+        # space): read without any conversion.
+        own = "RGBA float" if fmt == "RGBA float" else "R'G'B'A float"
+        digest.update(tsops.render_bytes(node, own)[2])
     with open(out, "w") as f:
         f.write(digest.hexdigest())
 
