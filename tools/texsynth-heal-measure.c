@@ -1,6 +1,7 @@
 /* texsynth-heal-measure: quality measures of a healed image against the
  * original and its hole (definitions in heal-metrics.h).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "argument-lists.h"
 #include "heal-metrics.h"
 #include "image-io.h"
 
@@ -134,18 +135,5 @@ out:
 int
 main (int argc, char **argv)
 {
-  int start = 1, code = EXIT_SUCCESS;
-  bool several = false;
-
-  for (int i = 1; i < argc; i++)
-    several = several || strcmp (argv[i], "+") == 0;
-  /* Each list's arguments are argv[start..i-1]; argv[start - 1], the
-   * program's name or a '+', stands in as its argv[0]. */
-  for (int i = 1; i <= argc && code == EXIT_SUCCESS; i++)
-    if (i == argc || strcmp (argv[i], "+") == 0)
-      {
-        code = measure_arguments (i - start + 1, argv + start - 1, several);
-        start = i + 1;
-      }
-  return code;
+  return ts_run_argument_lists (argc, argv, measure_arguments, EXIT_SUCCESS);
 }

@@ -3,6 +3,7 @@
  * the exemplar's repeat (lattice-metrics.h), and with --shapes the shapes
  * of their phases (shape-metrics.h).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "argument-lists.h"
 #include "image-io.h"
 #include "lattice-metrics.h"
 #include "metrics.h"
@@ -525,18 +526,5 @@ measure_arguments (int argc, char **argv, bool several)
 int
 main (int argc, char **argv)
 {
-  int start = 1, code = EXIT_SUCCESS;
-  bool several = false;
-
-  for (int i = 1; i < argc; i++)
-    several = several || strcmp (argv[i], "+") == 0;
-  /* Each list's arguments are argv[start..i-1]; argv[start - 1], the
-   * program's name or a '+', stands in as its argv[0]. */
-  for (int i = 1; i <= argc && code == EXIT_SUCCESS; i++)
-    if (i == argc || strcmp (argv[i], "+") == 0)
-      {
-        code = measure_arguments (i - start + 1, argv + start - 1, several);
-        start = i + 1;
-      }
-  return code;
+  return ts_run_argument_lists (argc, argv, measure_arguments, EXIT_SUCCESS);
 }
