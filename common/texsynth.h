@@ -71,6 +71,44 @@ typedef struct
  * the engine then stops soon and returns TS_ERROR_CANCELLED. */
 typedef bool (*TsProgressFunc) (double fraction, const char *stage, void *user_data);
 
+/* --- Guides: a layout the synthesis follows (common/engine/guide*.c) ---
+ * Texture by numbers and style transfer (Hertzmann et al. 2001): each
+ * output neighbourhood is matched to exemplar neighbourhoods on its
+ * colours and, times `weight`, on how the target guide around it agrees
+ * with the exemplar guide around the candidate. */
+#define TS_MAX_GUIDE_CHANNELS 3
+/* Labels are kept in a byte; a label map rarely has more than a few. */
+#define TS_MAX_GUIDE_LABELS 32
+#define TS_MAX_GUIDE_WEIGHT 100.0
+
+typedef enum
+{
+  TS_GUIDE_AUTO = 0, /* labels when the exemplar guide has at most
+                        TS_MAX_GUIDE_LABELS distinct values and most
+                        target pixels take one of them, else values   */
+  TS_GUIDE_LABELS,   /* equal or not: flat colours, indexed maps      */
+  TS_GUIDE_VALUES    /* squared differences: heights, sketches, photos */
+} TsGuideCompare;
+
+typedef struct
+{
+  size_t         channels;       /* floats per guide pixel, 1 .. 3        */
+  /* Aligned with the exemplar (its size), or NULL for style transfer:
+   * the guides are then the exemplar's L / 100 and the target's (one
+   * channel, e.g. the photo to restyle's L / 100), the target's moved to
+   * the exemplar's mean and spread of L. */
+  const float   *exemplar_guide;
+  const float   *target_guide;   /* output_width x output_height pixels  */
+  TsGuideCompare compare;
+  double         weight;         /* 0 .. TS_MAX_GUIDE_WEIGHT: at 1 a guide
+                                    pixel that disagrees costs as much as
+                                    two unrelated texture pixels          */
+} TsGuides;
+
+/* Defaults: one channel, AUTO, weight TS_DEFAULT_GUIDE_WEIGHT, no data. */
+#define TS_DEFAULT_GUIDE_WEIGHT 1.0
+void ts_guides_init (TsGuides *guides);
+
 typedef struct
 {
   size_t   output_width;       /* 1 .. TS_MAX_OUTPUT_SIDE                     */
@@ -99,6 +137,12 @@ typedef struct
   /* Optional debug output: if not NULL, receives 2 int32 per output pixel,
    * the exemplar (x, y) each output pixel was copied from. */
   int32_t *source_map;
+
+  /* Optional: guides the output's layout follows (see TsGuides). With
+   * histogram matching, a guided output matches the exemplar's parts in
+   * the shares the target asks for, not the whole exemplar's. Tileable
+   * guided outputs keep the target's layout (no roll of tile edges). */
+  const TsGuides *guides;
 } TsParams;
 
 /* Fill `params` with the defaults (512x512, quality default, seed 0, ...). */
@@ -109,6 +153,10 @@ void ts_params_init (TsParams *params);
 TsStatus ts_params_validate (const TsParams *params,
                              const TsImage  *exemplar,
                              TsError        *error);
+
+/* Whether params->guides (checked as ts_params_validate does) compare as
+ * labels: TS_GUIDE_AUTO answers for the guides given. */
+bool ts_guides_use_labels (const TsParams *params, const TsImage *exemplar);
 
 /* Peak memory a synthesis would need, in bytes. */
 TsStatus ts_estimate_memory (const TsParams *params,

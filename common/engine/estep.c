@@ -121,6 +121,8 @@ collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const T
                   float weight = row[jx].weight;
                   if (histogram)
                     weight *= histogram->factor[source];
+                  if (state->guide)
+                    weight *= ts_guide_vote_factor (state->guide, py * state->width + px, source);
                   /* Matched neighbourhoods never vote for transparency. */
                   if (value[3] <= 0.0f || !(weight > 0.0f))
                     continue;

@@ -74,6 +74,29 @@ ts_histogram_free (TsHistogram *h)
 }
 
 void
+ts_histogram_set_wanted (TsHistogram *h, const float *wanted)
+{
+  size_t n = ts_image_pixel_count (h->source);
+  double total = 0.0;
+
+  memset (h->exemplar, 0, sizeof h->exemplar);
+  for (size_t i = 0; i < n; i++)
+    {
+      const float *p = h->source->pixels + i * TS_CHANNELS;
+      if (p[3] <= 0.0f || !(wanted[i] > 0.0f))
+        continue;
+      for (int c = 0; c < 3; c++)
+        h->exemplar[c][ts_histogram_bin (h, c, p[c])] += wanted[i];
+      total += wanted[i];
+    }
+  if (total <= 0.0)
+    return;
+  for (int c = 0; c < 3; c++)
+    for (size_t b = 0; b < TS_HISTOGRAM_BINS; b++)
+      h->exemplar[c][b] = (float) (h->exemplar[c][b] * TS_HISTOGRAM_BINS / total);
+}
+
+void
 ts_histogram_update (TsHistogram *h, const uint32_t *usage)
 {
   float density[3][TS_HISTOGRAM_BINS];

@@ -28,6 +28,10 @@ void     ts_histogram_free (TsHistogram *histogram);
 /* Recomputes the output side from `usage` (how many output pixels copy
  * each exemplar pixel; see ts_occurrence_count), and the factor of every
  * exemplar pixel. */
+/* Makes the exemplar side the exemplar's pixels weighted by `wanted`
+ * (one non-negative weight per pixel) instead of each counted once: the
+ * histogram a guide asks for. */
+void     ts_histogram_set_wanted (TsHistogram *histogram, const float *wanted);
 void     ts_histogram_update (TsHistogram *histogram, const uint32_t *usage);
 
 static inline size_t

@@ -5,6 +5,7 @@
 #ifndef TS_KCOHERENCE_H
 #define TS_KCOHERENCE_H
 
+#include "guide.h"
 #include "image.h"
 #include "indexing.h"
 #include "mrpm.h"
@@ -23,6 +24,7 @@ typedef struct
   uint32_t       visit;
   float          best;
   int32_t        best_centre;
+  TsGuideQuery  *guide;          /* target guide around the neighbourhood, or NULL */
 } TsSearch;
 
 /* Sum of squared differences, abandoned (returning >= bound) as soon as a
@@ -61,9 +63,11 @@ ts_search_consider (TsSearch *s, ptrdiff_t x, ptrdiff_t y)
   s->stamp[index] = s->visit;
   if (ts_image_pixel (s->exemplar, qx, qy)[3] <= 0.0f)
     return;
-  if (s->penalty)
+  if (s->penalty || s->guide)
     {
-      float extra = s->penalty[index];
+      float extra = s->penalty ? s->penalty[index] : 0.0f;
+      if (s->guide)
+        extra += ts_guide_cost (s->guide, qx, qy, s->best - extra);
       if (extra >= s->best)
         return;
       d = extra + ts_search_ssd_bounded (s, qx, qy, s->best - extra);

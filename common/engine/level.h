@@ -5,6 +5,7 @@
 #define TS_LEVEL_H
 
 #include "cancel.h"
+#include "guide.h"
 #include "histogram.h"
 #include "mrpm.h"
 #include "schedule.h"
@@ -26,6 +27,7 @@ typedef struct
   float                *disagreement; /* if not NULL, the E-step stores each pixel's
                                          squared distance from its vote mean */
   TsCancel             *cancel;     /* polled by both steps, or NULL        */
+  const TsGuideLevel   *guide;      /* guides of this level, or NULL        */
 } TsLevelState;
 
 /* Neighbourhood centres of one iteration along one axis, plus for every

@@ -118,6 +118,24 @@ search_centre (TsSearch *s, uint32_t *proposed, const TsLevelState *state, const
     }
 }
 
+/* A few random exemplar pixels whose guide matches the target's at the
+ * centre, and their k-coherence candidates. */
+static void
+propose_by_guide (TsSearch *s, const TsLevelState *state, size_t k_use, uint32_t seed_stream,
+                  ptrdiff_t cx, ptrdiff_t cy, size_t centre_index)
+{
+  const TsGuideLevel *g = state->guide;
+  size_t bin = ts_guide_target_bin (g, (size_t) cx, (size_t) cy);
+  size_t first = g->bin_start[bin], members = g->bin_start[bin + 1] - first;
+
+  for (uint32_t i = 0; i < TS_GUIDE_PROPOSALS; i++)
+    {
+      uint64_t r = ts_random (seed_stream, 0, i, centre_index, 8);
+      ts_search_propose (s, state->candidates, k_use,
+                         g->bin_member[first + ts_random_below (r, members)], 0, 0);
+    }
+}
+
 TsStatus
 ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
           const TsPass *pass, size_t k_use, uint32_t seed_stream, TsMatch *matches)
@@ -130,12 +148,15 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
 
 #pragma omp parallel
   {
-    TsSearch s = { ex, pass->patch, radius, NULL, state->penalty, NULL, 0, 0.0f, -1 };
+    TsSearch s = { ex, pass->patch, radius, NULL, state->penalty, NULL, 0, 0.0f, -1, NULL };
     float *neighbourhood = malloc (pass->patch * pass->patch * TS_CHANNELS * sizeof (float));
     s.stamp = calloc (ex_pixels, sizeof (uint32_t));
     uint32_t *proposed = calloc (ex_pixels, sizeof (uint32_t));
+    TsGuideQuery guide_query = { 0 };
     s.neighbourhood = neighbourhood;
-    if (!neighbourhood || !s.stamp || !proposed)
+    if (state->guide && ts_guide_query_init (&guide_query, state->guide, pass->patch) == TS_OK)
+      s.guide = &guide_query;
+    if (!neighbourhood || !s.stamp || !proposed || (state->guide && !s.guide))
       {
 #pragma omp atomic write
         failed = 1;
@@ -163,7 +184,11 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         if (s.visit == UINT32_MAX)   /* ts_search_begin wraps it to 0 */
           memset (proposed, 0, ex_pixels * sizeof (uint32_t));
         ts_search_begin (&s, ex_pixels);
+        if (s.guide)
+          ts_guide_query_gather (s.guide, cx, cy, state->wrap_x, state->wrap_y);
         search_centre (&s, proposed, state, pass, k_use, seed_stream, cx, cy, (size_t) i);
+        if (s.guide)
+          propose_by_guide (&s, state, k_use, seed_stream, cx, cy, (size_t) i);
         matches[i].centre = s.best_centre;
         matches[i].distance = s.best;
         /* |x - z|^(r-2) on the per-pixel RMS distance; the epsilon bounds
@@ -174,6 +199,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
     free (neighbourhood);
     free (s.stamp);
     free (proposed);
+    ts_guide_query_free (&guide_query);
   }
   if (failed)
     return TS_ERROR_OUT_OF_MEMORY;

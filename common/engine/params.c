@@ -1,6 +1,7 @@
 /* Parameter defaults, validation (the one place), memory estimate.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "texsynth.h"
+#include "guide-params.h"
 #include "image.h"
 #include "schedule.h"
 #include "error.h"
@@ -130,6 +131,9 @@ validate_without_memory (const TsParams *params, const TsImage *exemplar, TsErro
   if (!exemplar_has_opaque_pixel (exemplar))
     return ts_fail (error, TS_ERROR_TRANSPARENT_EXEMPLAR,
                     "the exemplar is fully transparent: there is nothing to copy from");
+  status = ts_guides_validate (params, exemplar, error);
+  if (status != TS_OK)
+    return status;
   if (params->initial_source)
     {
       size_t n = params->output_width * params->output_height;
@@ -177,6 +181,7 @@ estimate_bytes (const TsParams *params, const TsImage *exemplar, int threads)
     bytes += out * 8.0;
   if (params->initial_source)
     bytes += pyramid_bytes (out, 8.0 + 4.0);
+  bytes += ts_guides_estimate_bytes (params, exemplar);
   return bytes + 16.0 * 1024 * 1024;                   /* fixed overhead */
 }
 

@@ -136,7 +136,10 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
 {
   const TsImage *ex = state->exemplar;
 
-  if (!coarser)
+  if (!coarser && state->guide)
+    ts_guide_start_blocks (state->guide, ex, state->source, state->width, state->height,
+                           params->seed, level, block);
+  else if (!coarser)
     random_blocks (state, params, level, block);
   else
     {
@@ -160,6 +163,20 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
   for (size_t p = 0; state->preserve && p < state->width * state->height; p++)
     if (state->preserve[p] >= 1.0f)
       state->source[p] = state->preserve_source[p];
+}
+
+/* Under a guide the histogram to match is the exemplar's parts in the
+ * shares the target asks for. */
+static TsStatus
+want_guided_histogram (TsHistogram *histogram, const TsLevelState *state)
+{
+  float *wanted = malloc (ts_image_pixel_count (state->exemplar) * sizeof (float));
+  if (!wanted)
+    return TS_ERROR_OUT_OF_MEMORY;
+  ts_guide_wanted_usage (state->guide, state->exemplar, wanted);
+  ts_histogram_set_wanted (histogram, wanted);
+  free (wanted);
+  return TS_OK;
 }
 
 /* All iterations of all passes of one level. */
@@ -199,7 +216,8 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   if (params->histogram_matching)
     {
       histogram = malloc (sizeof *histogram);
-      if (!histogram || ts_histogram_init (histogram, state->exemplar) != TS_OK)
+      if (!histogram || ts_histogram_init (histogram, state->exemplar) != TS_OK ||
+          (state->guide && want_guided_histogram (histogram, state) != TS_OK))
         {
           if (histogram)
             ts_histogram_free (histogram);
@@ -314,6 +332,8 @@ typedef struct
   int32_t        *initial_source;
   float          *initial_preserve;
   float          *disagreement;
+  TsGuidePyramid  guides;
+  TsGuideLevel    guide_level;
 } Work;
 
 static void
@@ -322,6 +342,7 @@ work_free_level (Work *w)
   free (w->opaque);
   free (w->initial_source);
   free (w->initial_preserve);
+  ts_guide_level_free (&w->guide_level);
   w->opaque = NULL;
   w->initial_source = NULL;
   w->initial_preserve = NULL;
@@ -337,6 +358,7 @@ work_free (Work *w)
   ts_candidate_set_free (&w->candidates);
   ts_candidate_set_free (&w->coarser_candidates);
   ts_pyramid_free (&w->pyramid);
+  ts_guide_pyramid_free (&w->guides);
   ts_image_free (&w->working);
 }
 
@@ -385,6 +407,12 @@ synthesize_level (Run *run, Work *w, size_t level)
   state->wrap_x = params->wrap_x;
   state->wrap_y = params->wrap_y;
   state->cancel = &run->cancel;
+  if (w->guides.levels)
+    {
+      if ((status = ts_guide_level_init (&w->guides, level, ex, &w->guide_level)) != TS_OK)
+        return status;
+      state->guide = &w->guide_level;
+    }
   if ((status = list_opaque (ex, &w->opaque, &state->opaque_count)) != TS_OK)
     return status;
   state->opaque = w->opaque;
@@ -405,7 +433,10 @@ synthesize_level (Run *run, Work *w, size_t level)
   start_sources (state, params, level, plan.pass[0].patch, w->coarser_source, w->coarser_width,
                  w->coarser_ex_width);
 
-  if (level == 0 && (params->wrap_x || params->wrap_y) && !params->initial_source)
+  /* Tile edges are placed by rolling the result, which would move it
+   * off a guide's layout. */
+  if (level == 0 && (params->wrap_x || params->wrap_y) && !params->initial_source &&
+      !params->guides)
     {
       w->disagreement = calloc (state->width * state->height, sizeof (float));
       if (!w->disagreement)
@@ -477,6 +508,8 @@ ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
   status = ts_image_to_working (exemplar, &w.working);
   if (status == TS_OK)
     status = ts_pyramid_build (&w.working, ts_schedule_levels (exemplar), &w.pyramid);
+  if (status == TS_OK && params->guides)
+    status = ts_guide_pyramid_build (params, exemplar, &w.pyramid, &w.guides);
   if (status == TS_OK)
     {
       run.progress.total = planned_work (params, &w.pyramid);
