@@ -7,6 +7,7 @@
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 
 #include "dialogs-gimp2.h"
+#include "dialog-preview.h"
 
 #include <libgimp/gimpui.h>
 #include <glib/gi18n-lib.h>
@@ -14,9 +15,20 @@
 typedef struct
 {
   GtkWidget *dialog;
+  GtkWidget *vbox;
   GtkWidget *table;
   gint       rows;
 } Form;
+
+/* What a preview runs: the exemplar and the dialog's live settings (the
+ * seed is kept apart by GimpRandomSeed). */
+typedef struct
+{
+  const TsExemplar *exemplar;
+  const TsRenderArgs *render;
+  const TsSolidArgs *solid;
+  const guint32 *seed;
+} PreviewSource;
 
 static void
 form_begin (Form *form, const gchar *title, const gchar *help_id)
@@ -37,6 +49,7 @@ form_begin (Form *form, const gchar *title, const gchar *help_id)
   gtk_container_set_border_width (GTK_CONTAINER (vbox), 12);
   gtk_box_pack_start (GTK_BOX (gtk_dialog_get_content_area (GTK_DIALOG (form->dialog))),
                       vbox, TRUE, TRUE, 0);
+  form->vbox = vbox;
   form->table = gtk_table_new (1, 3, FALSE);
   gtk_table_set_col_spacings (GTK_TABLE (form->table), 6);
   gtk_table_set_row_spacings (GTK_TABLE (form->table), 6);
@@ -133,6 +146,37 @@ form_seed (Form *form, guint32 *seed, gboolean *randomize)
   g_free (label);
 }
 
+static TsPreview *
+start_preview (gpointer data)
+{
+  const PreviewSource *source = data;
+
+  if (source->render)
+    {
+      TsRenderArgs args = *source->render;
+
+      args.seed = (gint) (*source->seed & G_MAXINT);
+      return ts_preview_start_render (source->exemplar, &args);
+    }
+  else
+    {
+      TsSolidArgs args = *source->solid;
+
+      args.seed = (gint) (*source->seed & G_MAXINT);
+      return ts_preview_start_solid (source->exemplar, 1, &args);
+    }
+}
+
+/* GIMP's filter dialogs show their preview first. */
+static void
+form_preview (Form *form, PreviewSource *source)
+{
+  GtkWidget *preview = ts_preview_widget_new (start_preview, source);
+
+  gtk_box_pack_start (GTK_BOX (form->vbox), preview, FALSE, FALSE, 0);
+  gtk_box_reorder_child (GTK_BOX (form->vbox), preview, 0);
+}
+
 static gboolean
 form_run (Form *form)
 {
@@ -144,14 +188,19 @@ form_run (Form *form)
   return ok;
 }
 
+/* `exemplar`: what the preview grows, or NULL for no preview. */
 static gboolean
-render_form (TsRenderArgs *args, const gchar *title, const gchar *procedure)
+render_form (TsRenderArgs *args, const gchar *title, const gchar *procedure,
+             const TsExemplar *exemplar)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
+  PreviewSource source = { exemplar, args, NULL, &seed };
 
   form_begin (&form, title, procedure);
+  if (exemplar)
+    form_preview (&form, &source);
   form_int (&form, "width", &args->width, 1, TS_PLUGIN_MAX_SIDE, 4096);
   form_int (&form, "height", &args->height, 1, TS_PLUGIN_MAX_SIDE, 4096);
   form_toggle (&form, "tileable", &args->tileable);
@@ -164,15 +213,15 @@ render_form (TsRenderArgs *args, const gchar *title, const gchar *procedure)
 }
 
 gboolean
-ts_render_dialog2 (TsRenderArgs *args)
+ts_render_dialog2 (TsRenderArgs *args, const TsExemplar *exemplar)
 {
-  return render_form (args, _("Texture Synthesis"), TS_PROC_RENDER);
+  return render_form (args, _("Texture Synthesis"), TS_PROC_RENDER, exemplar);
 }
 
 gboolean
 ts_layers_dialog2 (TsRenderArgs *args)
 {
-  return render_form (args, _("Texture Synthesis of All Layers"), TS_PROC_RENDER_LAYERS);
+  return render_form (args, _("Texture Synthesis of All Layers"), TS_PROC_RENDER_LAYERS, NULL);
 }
 
 gboolean
@@ -260,14 +309,16 @@ form_path (Form *form, gchar *path, gsize size, GtkWidget **entry_out)
 }
 
 gboolean
-ts_solid_dialog2 (TsSolidArgs *args)
+ts_solid_dialog2 (TsSolidArgs *args, const TsExemplar *exemplar)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
   GtkWidget *entry;
+  PreviewSource source = { exemplar, NULL, args, &seed };
 
   form_begin (&form, _("Solid Texture"), TS_PROC_SOLID);
+  form_preview (&form, &source);
   form_int (&form, "size", &args->size, TS_PLUGIN_MIN_SOLID, TS_PLUGIN_MAX_SOLID,
             TS_PLUGIN_MAX_SOLID);
   form_path (&form, args->path, sizeof args->path, &entry);

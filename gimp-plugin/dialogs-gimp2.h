@@ -7,10 +7,11 @@
 
 #include "texsynth-plugin.h"
 
-gboolean ts_render_dialog2   (TsRenderArgs *args);
+/* The render and solid dialogs preview a small run on `exemplar`. */
+gboolean ts_render_dialog2   (TsRenderArgs *args, const TsExemplar *exemplar);
 gboolean ts_layers_dialog2   (TsRenderArgs *args);
 gboolean ts_tileable_dialog2 (TsTileableArgs *args);
-gboolean ts_solid_dialog2    (TsSolidArgs *args);
+gboolean ts_solid_dialog2    (TsSolidArgs *args, const TsExemplar *exemplar);
 /* `procedure` chooses the fields: context and sample-from, or percent. */
 gboolean ts_heal_dialog2     (TsHealArgs *args, const gchar *procedure, const gchar *title);
 

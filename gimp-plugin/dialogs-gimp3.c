@@ -5,16 +5,53 @@
 #include <stdarg.h>
 
 #include "dialogs-gimp3.h"
+#include "dialog-preview.h"
 
 #include <libgimp/gimpui.h>
 
+typedef struct
+{
+  const TsDialogPreview *preview;
+  GimpProcedureConfig   *config;
+} PreviewSource;
+
+/* The widgets write every change into the config: it holds the settings
+ * as the dialog shows them. */
+static TsPreview *
+start_preview (gpointer data)
+{
+  const PreviewSource *source = data;
+
+  if (source->preview->solid)
+    {
+      TsSolidArgs args;
+
+      ts_solid_args_init (&args);
+      g_object_get (source->config, "size", &args.size, "quality", &args.quality,
+                    "seed", &args.seed, "cell-structure", &args.cell_structure, NULL);
+      return ts_preview_start_solid (source->preview->exemplars, source->preview->n_exemplars,
+                                     &args);
+    }
+  else
+    {
+      TsRenderArgs args;
+
+      g_object_get (source->config, "width", &args.width, "height", &args.height,
+                    "tileable", &args.tileable, "quality", &args.quality,
+                    "seed", &args.seed, NULL);
+      return ts_preview_start_render (source->preview->exemplars, &args);
+    }
+}
+
 gboolean
-ts_dialog3 (GimpProcedure       *procedure,
-            GimpProcedureConfig *config,
-            const gchar         *title,
-            const gchar         *first_property,
+ts_dialog3 (GimpProcedure         *procedure,
+            GimpProcedureConfig   *config,
+            const gchar           *title,
+            const TsDialogPreview *preview,
+            const gchar           *first_property,
             ...)
 {
+  PreviewSource source = { preview, config };
   GList *properties = NULL;
   const gchar *property;
   GtkWidget *dialog;
@@ -47,6 +84,15 @@ ts_dialog3 (GimpProcedure       *procedure,
                                            ts_cell_structure_label (TS_PLUGIN_CELL_STRUCTURE_OFF),
                                            TS_PLUGIN_CELL_STRUCTURE_OFF, NULL)));
   gimp_procedure_dialog_fill_list (GIMP_PROCEDURE_DIALOG (dialog), properties);
+  if (preview)
+    {
+      /* First, as in GIMP's own filter dialogs. */
+      GtkWidget *content = gtk_dialog_get_content_area (GTK_DIALOG (dialog));
+      GtkWidget *widget = ts_preview_widget_new (start_preview, &source);
+
+      gtk_box_pack_start (GTK_BOX (content), widget, FALSE, FALSE, 0);
+      gtk_box_reorder_child (GTK_BOX (content), widget, 0);
+    }
   ok = gimp_procedure_dialog_run (GIMP_PROCEDURE_DIALOG (dialog));
   gtk_widget_destroy (dialog);
   g_list_free (properties);

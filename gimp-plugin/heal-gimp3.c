@@ -34,11 +34,11 @@ ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
   if (mode == GIMP_RUN_INTERACTIVE)
     {
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      ok = uncrop ? ts_dialog3 (procedure, config, _("Uncrop by Synthesis"),
+      ok = uncrop ? ts_dialog3 (procedure, config, _("Uncrop by Synthesis"), NULL,
                                 "percent", "quality", "seed", NULL)
                   : ts_dialog3 (procedure, config,
                                 selection ? _("Heal Selection by Synthesis")
-                                          : _("Heal Transparency by Synthesis"),
+                                          : _("Heal Transparency by Synthesis"), NULL,
                                 "context", "sample-from", "quality", "seed", NULL);
       if (!ok)
         return failure (procedure, GIMP_PDB_CANCEL, NULL);

@@ -99,7 +99,7 @@ ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
                       "height", MIN (2 * gimp_drawable_get_height (driver), TS_PLUGIN_MAX_SIDE),
                       NULL);
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      if (!ts_dialog3 (procedure, config, _("Texture Synthesis of All Layers"),
+      if (!ts_dialog3 (procedure, config, _("Texture Synthesis of All Layers"), NULL,
                        "width", "height", "tileable", "quality", "seed", NULL))
         {
           g_free (layers);

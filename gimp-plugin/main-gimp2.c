@@ -212,7 +212,7 @@ run_render (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *o
           args.height = MIN (2 * extent->height, TS_PLUGIN_MAX_SIDE);
         }
       args.seed = ts_plugin_random_seed ();
-      if (!ts_render_dialog2 (&args))
+      if (!ts_render_dialog2 (&args, &exemplar))
         {
           ts_exemplar_clear (&exemplar);
           return fail (outcome, GIMP_PDB_CANCEL, NULL);
@@ -362,19 +362,25 @@ run_solid (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *ou
   else
     load_last_solid_args (&args);
 
+  if ((message = ts_plugin_check_ops (TS_OP_VOLUME_SAVE, TS_OP_VOLUME_SLICE, NULL)))
+    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, message);
+  /* Before the dialog: its preview grows the exemplar. */
+  if (!read_exemplar (drawable, TRUE, &exemplar, &message))
+    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, message);
   if (mode == GIMP_RUN_INTERACTIVE)
     {
       args.seed = ts_plugin_random_seed ();
-      if (!ts_solid_dialog2 (&args))
-        return fail (outcome, GIMP_PDB_CANCEL, NULL);
+      if (!ts_solid_dialog2 (&args, &exemplar))
+        {
+          ts_exemplar_clear (&exemplar);
+          return fail (outcome, GIMP_PDB_CANCEL, NULL);
+        }
     }
   if ((message = ts_solid_args_check (&args, 1)))
-    return fail (outcome, GIMP_PDB_CALLING_ERROR, message);
-  if ((message = ts_plugin_check_ops (TS_OP_VOLUME_SAVE, TS_OP_VOLUME_SLICE, NULL)))
-    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, message);
-
-  if (!read_exemplar (drawable, TRUE, &exemplar, &message))
-    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, message);
+    {
+      ts_exemplar_clear (&exemplar);
+      return fail (outcome, GIMP_PDB_CALLING_ERROR, message);
+    }
   gimp_progress_init (_("Synthesising a solid texture"));
   if (!ts_plugin_solid (&exemplar, 1, &args, slices, &error))
     {

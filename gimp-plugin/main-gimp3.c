@@ -53,6 +53,7 @@ run_render (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
     {
       const GeglRectangle *extent = gegl_buffer_get_extent (exemplar.buffer);
       gboolean size_chosen;
+      TsDialogPreview preview = { &exemplar, 1, FALSE };
 
       /* Twice the exemplar until the user has chosen a size once. */
       g_object_get (config, "size-chosen", &size_chosen, NULL);
@@ -61,7 +62,7 @@ run_render (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
                       "width", MIN (2 * extent->width, TS_PLUGIN_MAX_SIDE),
                       "height", MIN (2 * extent->height, TS_PLUGIN_MAX_SIDE), NULL);
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      if (!ts_dialog3 (procedure, config, _("Texture Synthesis"),
+      if (!ts_dialog3 (procedure, config, _("Texture Synthesis"), &preview,
                        "width", "height", "tileable", "quality", "seed", NULL))
         {
           ts_exemplar_clear (&exemplar);
@@ -115,7 +116,7 @@ run_tileable (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
   if (mode == GIMP_RUN_INTERACTIVE)
     {
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      if (!ts_dialog3 (procedure, config, _("Make Seamless by Synthesis"),
+      if (!ts_dialog3 (procedure, config, _("Make Seamless by Synthesis"), NULL,
                        "quality", "seed", NULL))
         return failure (procedure, GIMP_PDB_CANCEL, NULL);
     }
@@ -174,35 +175,49 @@ run_solid (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_U
   GimpImage *output;
   GError *error = NULL;
   gchar *message = NULL, *path = NULL;
+  GFile *file = NULL;
   gint n = count_drawables (drawables), n_read = 0;
   gboolean ok;
 
   if ((message = check_drawables (drawables, 3)))
     return failure (procedure, GIMP_PDB_CALLING_ERROR, message);
-
-  if (mode == GIMP_RUN_INTERACTIVE)
-    {
-      g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      if (!ts_dialog3 (procedure, config, _("Solid Texture"), "size", "path", "cell-structure",
-                       "quality", "seed", NULL))
-        return failure (procedure, GIMP_PDB_CANCEL, NULL);
-    }
-  ts_solid_args_init (&args);
-  g_object_get (config, "size", &args.size, "path", &path, "quality", &args.quality,
-                "seed", &args.seed, "cell-structure", &args.cell_structure, NULL);
-  g_strlcpy (args.path, path ? path : "", sizeof args.path);
-  if (path && strlen (path) >= sizeof args.path)
-    args.path[0] = '\0';
-  g_free (path);
-  if ((message = ts_solid_args_check (&args, n)))
-    return failure (procedure, GIMP_PDB_CALLING_ERROR, message);
   if ((message = ts_plugin_check_ops (TS_OP_VOLUME_SAVE, TS_OP_VOLUME_SLICE, NULL)))
     return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
 
+  /* Before the dialog: its preview grows the exemplars. */
   for (n_read = 0; n_read < n; n_read++)
     if (!read_exemplar (drawables[n_read], n == 1, &exemplars[n_read], &message))
       break;
   ok = n_read == n;
+  if (ok && mode == GIMP_RUN_INTERACTIVE)
+    {
+      TsDialogPreview preview = { exemplars, n, TRUE };
+
+      g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
+      if (!ts_dialog3 (procedure, config, _("Solid Texture"), &preview, "size", "path",
+                       "cell-structure", "quality", "seed", NULL))
+        {
+          for (gint i = 0; i < n_read; i++)
+            ts_exemplar_clear (&exemplars[i]);
+          return failure (procedure, GIMP_PDB_CANCEL, NULL);
+        }
+    }
+  ts_solid_args_init (&args);
+  g_object_get (config, "size", &args.size, "path", &file, "quality", &args.quality,
+                "seed", &args.seed, "cell-structure", &args.cell_structure, NULL);
+  /* A file GIO cannot name by a local path (a remote URI) gives "". */
+  path = file ? g_file_get_path (file) : NULL;
+  g_strlcpy (args.path, path ? path : "", sizeof args.path);
+  if (path && strlen (path) >= sizeof args.path)
+    args.path[0] = '\0';
+  g_free (path);
+  g_clear_object (&file);
+  if (ok && (message = ts_solid_args_check (&args, n)))
+    {
+      for (gint i = 0; i < n_read; i++)
+        ts_exemplar_clear (&exemplars[i]);
+      return failure (procedure, GIMP_PDB_CALLING_ERROR, message);
+    }
   if (ok)
     {
       gimp_progress_init (_("Synthesising a solid texture"));
@@ -319,6 +334,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
   else if (g_str_equal (name, TS_PROC_SOLID))
     {
       gchar *path = g_build_filename (g_get_home_dir (), "solid-texture.vol", NULL);
+      GFile *file = g_file_new_for_path (path);
 
       procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
                                             run_solid, NULL, NULL);
@@ -334,8 +350,11 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                                        ts_arg_tooltip ("size"), TS_PLUGIN_MIN_SOLID,
                                        TS_PLUGIN_MAX_SOLID, TS_PLUGIN_DEFAULT_SOLID,
                                        G_PARAM_READWRITE);
-      gimp_procedure_add_string_argument (procedure, "path", ts_arg_label ("path"),
-                                          ts_arg_tooltip ("path"), path, G_PARAM_READWRITE);
+      /* A file argument: GimpProcedureDialog shows GIMP's file chooser
+       * for it, and Script-Fu still passes the file name as a string. */
+      gimp_procedure_add_file_argument (procedure, "path", ts_arg_label ("path"),
+                                        ts_arg_tooltip ("path"), GIMP_FILE_CHOOSER_ACTION_SAVE,
+                                        FALSE, file, G_PARAM_READWRITE);
       add_quality_and_seed (procedure, "solid-quality");
       /* After seed, as in GIMP 2.10: positional calls keep their meaning.
        * 0 off, 1 on, 2 automatic (the ops' default). */
@@ -348,6 +367,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
       gimp_procedure_add_image_return_value (procedure, "new-image", _("New image"),
                                              _("An image of the volume's three middle slices"),
                                              FALSE, G_PARAM_READWRITE);
+      g_object_unref (file);
       g_free (path);
     }
   else if (g_str_equal (name, TS_PROC_HEAL_SELECTION) || g_str_equal (name, TS_PROC_HEAL_TRANSPARENCY)

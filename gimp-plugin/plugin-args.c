@@ -169,8 +169,8 @@ static const struct
   const gchar *tooltip;
 } arg_texts[] =
 {
-  { "width", N_("Width"), N_("Width of the synthesised texture") },
-  { "height", N_("Height"), N_("Height of the synthesised texture") },
+  { "width", N_("Width"), N_("Width of the new image, in pixels") },
+  { "height", N_("Height"), N_("Height of the new image, in pixels") },
   { "tileable", N_("Tileable"),
     N_("Make the result tile seamlessly: its left edge continues its right edge "
        "and its top edge its bottom edge") },
@@ -184,8 +184,9 @@ static const struct
        "searches more and is slower") },
   { "seed", N_("Random seed"),
     N_("The same seed with the same settings gives the same result, whatever the "
-       "number of threads; change it for another variation") },
-  { "context", N_("Context width"),
+       "number of threads; change it for another variation. 0 is a seed like any "
+       "other, not a random one") },
+  { "context", N_("Context width (0 = whole layer)"),
     N_("How far around the hole, in pixels, the texture may be copied from; 0 uses "
        "the whole layer") },
   { "sample-from", N_("Sample from"),

@@ -317,8 +317,6 @@ ts_plugin_tileable (const TsExemplar     *exemplar,
   return TRUE;
 }
 
-static void connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad);
-
 /* A layout the op could not make is cleared (all zeros); a real one holds
  * pixel centres, each coordinate at least 0.5 for an exemplar at (0, 0). */
 static gboolean
@@ -418,7 +416,7 @@ ts_plugin_render_layers (TsMaterialSet      *set,
       sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
                                   "buffer", results[i], NULL);
       gegl_node_link_many (source_node (graph, layers[i].buffer), map, crop, sink, NULL);
-      connect_pads (layout_source, map, "aux");
+      ts_plugin_connect_pads (layout_source, map, "aux");
       watched[0] = map;
       run_with_progress (sink, watched, 0.9 + 0.1 * i / n_layers, 0.9 + 0.1 * (i + 1) / n_layers);
     }
@@ -463,7 +461,7 @@ ts_plugin_heal (GeglBuffer        *pixels,
   sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
   gegl_node_link_many (source, op, sink, NULL);
   if (mask)
-    connect_pads (source_node (graph, mask), op, "aux");
+    ts_plugin_connect_pads (source_node (graph, mask), op, "aux");
   run_with_progress (sink, watched, 0.0, 1.0);
   g_object_unref (graph);
 
@@ -479,8 +477,8 @@ ts_plugin_heal (GeglBuffer        *pixels,
   return TRUE;
 }
 
-static void
-connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad)
+void
+ts_plugin_connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad)
 {
   /* GEGL 0.4.44 renamed the call (and deprecated the old name). */
 #if GEGL_MINOR_VERSION > 4 || (GEGL_MINOR_VERSION == 4 && GEGL_MICRO_VERSION >= 44)
@@ -497,11 +495,11 @@ link_exemplars (GeglNode *graph, GeglNode *op, const TsExemplar *exemplars, gint
   static const gchar *const pads[] = { "input", "aux", "aux2" };
 
   for (gint i = 0; i < n && i < 3; i++)
-    connect_pads (source_node (graph, exemplars[i].buffer), op, pads[i]);
+    ts_plugin_connect_pads (source_node (graph, exemplars[i].buffer), op, pads[i]);
 }
 
-static void
-set_enum_by_nick (GeglNode *node, const gchar *property, const gchar *nick)
+void
+ts_plugin_set_enum_by_nick (GeglNode *node, const gchar *property, const gchar *nick)
 {
   GParamSpec *pspec = gegl_node_find_property (node, property);
   GEnumClass *klass;
@@ -579,7 +577,7 @@ ts_plugin_solid (const TsExemplar  *exemplars,
                                              "cell-structure", args->cell_structure, NULL);
       GeglNode *sink;
 
-      set_enum_by_nick (slice, "axis", axes[axis]);
+      ts_plugin_set_enum_by_nick (slice, "axis", axes[axis]);
       link_exemplars (graph, slice, exemplars, n_exemplars);
       slices[axis] = result_buffer (args->size, args->size);
       sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",

@@ -165,6 +165,13 @@ GeglBuffer *ts_plugin_copy_buffer (GeglBuffer          *source,
                                    const Babl          *format);
 void        ts_exemplar_clear     (TsExemplar *exemplar);
 
+/* Links `source`'s output to `sink_pad` of `sink`, with whichever call
+ * this GEGL has. */
+void ts_plugin_connect_pads (GeglNode *source, GeglNode *sink, const gchar *sink_pad);
+/* Sets an enum property of `node` by its value's nick; a property or
+ * nick this op lacks leaves it as it is. */
+void ts_plugin_set_enum_by_nick (GeglNode *node, const gchar *property, const gchar *nick);
+
 /* Makes the exemplar's pixels outside the selection transparent, so that
  * a non-rectangular selection gives its shape, not its bounds: pixels at
  * least half selected keep their alpha, the others get 0 (the ops never
