@@ -36,7 +36,7 @@ query (void)
     { GIMP_PDB_INT32,    "height",   "Height of the synthesised texture (1-16384)" },
     { GIMP_PDB_INT32,    "tileable", "Make the result tile seamlessly (TRUE or FALSE)" },
     { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
-    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more; 0 is a seed like any other)" },
   };
   static const GimpParamDef layers_args[] =
   {
@@ -47,7 +47,7 @@ query (void)
     { GIMP_PDB_INT32,    "height",   "Height of the synthesised layers (1-16384)" },
     { GIMP_PDB_INT32,    "tileable", "Make the result tile seamlessly (TRUE or FALSE)" },
     { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
-    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more; 0 is a seed like any other)" },
   };
   static const GimpParamDef tileable_args[] =
   {
@@ -55,7 +55,7 @@ query (void)
     { GIMP_PDB_IMAGE,    "image",    "Input image" },
     { GIMP_PDB_DRAWABLE, "drawable", "Layer to make seamless in place" },
     { GIMP_PDB_INT32,    "quality",  "Candidates compared per pixel (1-10, default 2)" },
-    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more; 0 is a seed like any other)" },
   };
   static const GimpParamDef solid_args[] =
   {
@@ -65,7 +65,7 @@ query (void)
     { GIMP_PDB_INT32,    "size",     "Edge of the cube in voxels (8-512)" },
     { GIMP_PDB_STRING,   "path",     "Volume file to write: .vol, .dds or .png" },
     { GIMP_PDB_INT32,    "quality",  "Search breadth per voxel (1-10, default 2)" },
-    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more; 0 is a seed like any other)" },
     /* Last: every argument before it keeps its place. */
     /* Once a boolean: FALSE and TRUE keep their meaning as 0 and 1. */
     { GIMP_PDB_INT32,    "cell-structure",
@@ -81,7 +81,7 @@ query (void)
     { GIMP_PDB_INT32,    "context",     "Pixels around the hole to copy from (0-16384, 0 = the whole layer)" },
     { GIMP_PDB_INT32,    "sample-from", "0 all around, 1 sides, 2 above and below" },
     { GIMP_PDB_INT32,    "quality",     "Search effort (1-10, default 2)" },
-    { GIMP_PDB_INT32,    "seed",        "Random seed (0 or more)" },
+    { GIMP_PDB_INT32,    "seed",        "Random seed (0 or more; 0 is a seed like any other)" },
   };
   static const GimpParamDef uncrop_args[] =
   {
@@ -90,7 +90,7 @@ query (void)
     { GIMP_PDB_DRAWABLE, "drawable", "Layer to extend" },
     { GIMP_PDB_INT32,    "percent",  "Border added on each side, percent of the side (1-100)" },
     { GIMP_PDB_INT32,    "quality",  "Search effort (1-10, default 2)" },
-    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more)" },
+    { GIMP_PDB_INT32,    "seed",     "Random seed (0 or more; 0 is a seed like any other)" },
   };
   static const GimpParamDef image_return[] =
   {
