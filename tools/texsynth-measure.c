@@ -6,6 +6,7 @@
 #include "argument-lists.h"
 #include "image-io.h"
 #include "lattice-metrics.h"
+#include "measure-guided.h"
 #include "metrics.h"
 #include "shape-metrics.h"
 
@@ -41,6 +42,12 @@ static const char usage_text[] =
   "                  RESULT instead (see Shapes below)\n"
   "  --phases=N      with --shapes: split the colours into N = 2 (default) or 3\n"
   "                  phases\n"
+  "  --exemplar-guide=PATH --target-guide=PATH\n"
+  "                  guided synthesis by labels: PATH are EXEMPLAR's label map\n"
+  "                  (each colour a label) and the map RESULT was grown to;\n"
+  "                  prints the label measures below instead\n"
+  "  --style-target=PATH  style transfer: PATH is the image RESULT restyles;\n"
+  "                  prints style-correlation and sharpness instead\n"
   "  -h, --help      print this help and exit\n"
   "\n"
   "Measures (distances are RMS Lab differences per value, sqrt(SSD / 147)):\n"
@@ -73,6 +80,14 @@ static const char usage_text[] =
   "                Each peak follows on a lattice-peak line (JSON:\n"
   "                lattice_strength, lattice_peaks with dx, dy, exemplar,\n"
   "                result)\n"
+  "\n"
+  "Guided (docs/measure.md): a result pixel's label is that of the centre of its\n"
+  "nearest exemplar 7x7 window. label-fidelity: the share, over pixels more than\n"
+  "3 px from the target's label edges, whose label is the target's there;\n"
+  "label-edge-offset: mean distance (px) between the target's and the result's\n"
+  "label edges, both ways; region-coherence: per label, coherence of those\n"
+  "pixels; style-correlation: correlation of lightness blurred by a Gaussian of\n"
+  "4 px between RESULT and the style target (1 = the layout followed).\n"
   "\n"
   "Shapes (--shapes): k-means on EXEMPLAR's Lab colours (started from the\n"
   "mean colours of N equal-count bands of its lightness) gives N phase\n"
@@ -473,6 +488,7 @@ measure_arguments (int argc, char **argv, bool several)
   int n_paths = 0, phases = TS_SHAPE_DEFAULT_PHASES;
   bool json = false, wrap_x = false, wrap_y = false, options_done = false, shapes = false;
   bool lattice = false;
+  const char *exemplar_guide = NULL, *target_guide = NULL, *style_target = NULL;
 
   for (int i = 1; i < argc; i++)
     {
@@ -492,6 +508,12 @@ measure_arguments (int argc, char **argv, bool several)
         shapes = true;
       else if (strcmp (a, "--lattice") == 0)
         lattice = true;
+      else if (strncmp (a, "--exemplar-guide=", 17) == 0)
+        exemplar_guide = a + 17;
+      else if (strncmp (a, "--target-guide=", 15) == 0)
+        target_guide = a + 15;
+      else if (strncmp (a, "--style-target=", 15) == 0)
+        style_target = a + 15;
       else if (strcmp (a, "--phases=2") == 0 || strcmp (a, "--phases=3") == 0)
         phases = a[9] - '0';
       else if (strncmp (a, "--phases", 8) == 0)
@@ -520,6 +542,11 @@ measure_arguments (int argc, char **argv, bool several)
     return usage_error ("%s", n_paths == 0 ? "missing EXEMPLAR and RESULT"
                                            : "missing RESULT (expected EXEMPLAR RESULT)");
 
+  if (!exemplar_guide != !target_guide)
+    return usage_error ("%s", "--exemplar-guide and --target-guide go together");
+  if (exemplar_guide || style_target)
+    return ts_measure_guided_results (paths, n_paths, exemplar_guide, target_guide, style_target,
+                                      json, several);
   return measure_results (paths, n_paths, wrap_x, wrap_y, lattice, json, several);
 }
 

@@ -2,6 +2,7 @@
  * guided start and proposals.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "guide.h"
+#include "guide-blur.h"
 #include "indexing.h"
 #include "rng.h"
 
@@ -167,7 +168,12 @@ build_values (const TsGuides *g, const TsImage *exemplar, size_t out_w, size_t o
         p[c] = g->target_guide[i * ch + c];
       p[3] = 1.0f;
     }
-  if (!g->exemplar_guide)
+  /* Style transfer compares the layout's tones, not the grain: the
+   * grain is the exemplar's to give. */
+  if (!g->exemplar_guide && (ts_guide_blur (&ex_base, TS_STYLE_GUIDE_BLUR) != TS_OK ||
+                             ts_guide_blur (&target_base, TS_STYLE_GUIDE_BLUR) != TS_OK))
+    status = TS_ERROR_OUT_OF_MEMORY;
+  if (status == TS_OK && !g->exemplar_guide)
     {
       /* Style transfer: the target's lightness moved to the exemplar's
        * mean and spread, so each part of it finds texture of its tone. */
@@ -191,7 +197,8 @@ build_values (const TsGuides *g, const TsImage *exemplar, size_t out_w, size_t o
       guides->bin_low = fminf (guides->bin_low, key);
       guides->bin_high = fmaxf (guides->bin_high, key);
     }
-  status = value_pyramid (&ex_base, guides->exemplar, guides->levels);
+  if (status == TS_OK)
+    status = value_pyramid (&ex_base, guides->exemplar, guides->levels);
   if (status == TS_OK)
     status = value_pyramid (&target_base, guides->target, guides->levels);
   ts_image_free (&ex_base);
