@@ -27,6 +27,8 @@ typedef struct
   const TsExemplar *exemplar;
   const TsRenderArgs *render;
   const TsSolidArgs *solid;
+  const TsHealArgs *heal;      /* with heal_pixels and heal_mask */
+  GeglBuffer *heal_pixels, *heal_mask;
   const guint32 *seed;
 } PreviewSource;
 
@@ -158,6 +160,13 @@ start_preview (gpointer data)
       args.seed = (gint) (*source->seed & G_MAXINT);
       return ts_preview_start_render (source->exemplar, &args);
     }
+  else if (source->heal)
+    {
+      TsHealArgs args = *source->heal;
+
+      args.seed = (gint) (*source->seed & G_MAXINT);
+      return ts_preview_start_heal (source->heal_pixels, source->heal_mask, &args);
+    }
   else
     {
       TsSolidArgs args = *source->solid;
@@ -196,7 +205,7 @@ render_form (TsRenderArgs *args, const gchar *title, const gchar *procedure,
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
-  PreviewSource source = { exemplar, args, NULL, &seed };
+  PreviewSource source = { exemplar, args, NULL, NULL, NULL, NULL, &seed };
 
   form_begin (&form, title, procedure);
   if (exemplar)
@@ -241,13 +250,17 @@ ts_tileable_dialog2 (TsTileableArgs *args)
 }
 
 gboolean
-ts_heal_dialog2 (TsHealArgs *args, const gchar *procedure, const gchar *title)
+ts_heal_dialog2 (TsHealArgs *args, const gchar *procedure, const gchar *title,
+                 GeglBuffer *preview_pixels, GeglBuffer *preview_mask)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
+  PreviewSource source = { NULL, NULL, NULL, args, preview_pixels, preview_mask, &seed };
 
   form_begin (&form, title, procedure);
+  if (preview_pixels && preview_mask)
+    form_preview (&form, &source);
   if (g_str_equal (procedure, TS_PROC_UNCROP))
     form_int (&form, "percent", &args->percent, 1, TS_PLUGIN_MAX_UNCROP, 50);
   else
@@ -315,7 +328,7 @@ ts_solid_dialog2 (TsSolidArgs *args, const TsExemplar *exemplar)
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
   GtkWidget *entry;
-  PreviewSource source = { exemplar, NULL, args, &seed };
+  PreviewSource source = { exemplar, NULL, args, NULL, NULL, NULL, &seed };
 
   form_begin (&form, _("Solid Texture"), TS_PROC_SOLID);
   form_preview (&form, &source);

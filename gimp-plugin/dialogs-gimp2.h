@@ -12,7 +12,10 @@ gboolean ts_render_dialog2   (TsRenderArgs *args, const TsExemplar *exemplar);
 gboolean ts_layers_dialog2   (TsRenderArgs *args);
 gboolean ts_tileable_dialog2 (TsTileableArgs *args);
 gboolean ts_solid_dialog2    (TsSolidArgs *args, const TsExemplar *exemplar);
-/* `procedure` chooses the fields: context and sample-from, or percent. */
-gboolean ts_heal_dialog2     (TsHealArgs *args, const gchar *procedure, const gchar *title);
+/* `procedure` chooses the fields: context and sample-from, or percent.
+ * With `preview_pixels` and `preview_mask` (ts_heal_preview_crop's), a
+ * preview heals them. */
+gboolean ts_heal_dialog2     (TsHealArgs *args, const gchar *procedure, const gchar *title,
+                              GeglBuffer *preview_pixels, GeglBuffer *preview_mask);
 
 #endif /* TEXSYNTH_DIALOGS_GIMP2_H */

@@ -22,7 +22,17 @@ start_preview (gpointer data)
 {
   const PreviewSource *source = data;
 
-  if (source->preview->solid)
+  if (source->preview->kind == TS_DIALOG_PREVIEW_HEAL)
+    {
+      TsHealArgs args;
+
+      ts_heal_args_init (&args);
+      g_object_get (source->config, "context", &args.context, "sample-from", &args.sample_from,
+                    "quality", &args.quality, "seed", &args.seed, NULL);
+      return ts_preview_start_heal (source->preview->heal_pixels, source->preview->heal_mask,
+                                    &args);
+    }
+  else if (source->preview->kind == TS_DIALOG_PREVIEW_SOLID)
     {
       TsSolidArgs args;
 

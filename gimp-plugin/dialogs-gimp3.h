@@ -6,13 +6,23 @@
 
 #include "texsynth-plugin.h"
 
-/* What a dialog's preview grows: the render or the solid procedure's
- * small run on `exemplars` with the config's current values. */
+/* What a dialog's preview runs with the config's current values: the
+ * render or the solid procedure's small run on `exemplars`, or healing
+ * heal_pixels with heal_mask (ts_heal_preview_crop's). */
+typedef enum
+{
+  TS_DIALOG_PREVIEW_RENDER,
+  TS_DIALOG_PREVIEW_SOLID,
+  TS_DIALOG_PREVIEW_HEAL
+} TsDialogPreviewKind;
+
 typedef struct
 {
-  const TsExemplar *exemplars;
-  gint              n_exemplars;
-  gboolean          solid;
+  TsDialogPreviewKind kind;
+  const TsExemplar   *exemplars;
+  gint                n_exemplars;
+  GeglBuffer         *heal_pixels;
+  GeglBuffer         *heal_mask;
 } TsDialogPreview;
 
 /* Shows the listed arguments (NULL-terminated), and a preview unless

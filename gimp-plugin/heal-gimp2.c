@@ -8,6 +8,29 @@
 #include "compat-gimp2.h"
 #include "dialogs-gimp2.h"
 
+/* The dialog's preview of healing the selection: the layer and selection
+ * around it; NULLs if there is no selection over the layer. */
+static void
+read_preview_crop (gint32 drawable, gint32 image, GeglBuffer **pixels, GeglBuffer **mask)
+{
+  GeglRectangle hole;
+  TsHealLayer layer = { 0 };
+
+  *pixels = *mask = NULL;
+  if (gimp_selection_is_empty (image) ||
+      !gimp_drawable_mask_intersect (drawable, &hole.x, &hole.y, &hole.width, &hole.height))
+    return;
+  gimp_drawable_offsets (drawable, &layer.offset_x, &layer.offset_y);
+  layer.buffer = gimp_drawable_get_buffer (drawable);
+  layer.format = gimp_drawable_get_format (drawable);
+  layer.width = gimp_drawable_width (drawable);
+  layer.height = gimp_drawable_height (drawable);
+  layer.selection = gimp_drawable_get_buffer (gimp_image_get_selection (image));
+  ts_heal_preview_crop (&layer, &hole, pixels, mask);
+  g_object_unref (layer.buffer);
+  g_object_unref (layer.selection);
+}
+
 /* The three heal procedures: read the layer (and the selection over it),
  * run texsynth:heal, write the result back as one undo step. */
 gboolean
@@ -47,10 +70,19 @@ ts_run_heal2 (const gchar *name, GimpRunMode mode, const GimpParam *params, gint
     gimp_get_data (name, &args);
   if (mode == GIMP_RUN_INTERACTIVE)
     {
+      GeglBuffer *preview_pixels = NULL, *preview_mask = NULL;
+      gboolean ok;
+
+      if (selection)
+        read_preview_crop (drawable, image, &preview_pixels, &preview_mask);
       args.seed = ts_plugin_random_seed ();
-      if (!ts_heal_dialog2 (&args, name, uncrop ? _("Uncrop by Synthesis")
-                                           : selection ? _("Heal Selection by Synthesis")
-                                                       : _("Heal Transparency by Synthesis")))
+      ok = ts_heal_dialog2 (&args, name, uncrop ? _("Uncrop by Synthesis")
+                                         : selection ? _("Heal Selection by Synthesis")
+                                                     : _("Heal Transparency by Synthesis"),
+                            preview_pixels, preview_mask);
+      g_clear_object (&preview_pixels);
+      g_clear_object (&preview_mask);
+      if (!ok)
         return fail (outcome, GIMP_PDB_CANCEL, NULL);
     }
   if ((message = ts_heal_args_check (&args)))

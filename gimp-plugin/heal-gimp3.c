@@ -11,6 +11,30 @@
 /* The three heal procedures: read the layer (and the selection over it),
  * run texsynth:heal, write the result back as one undo step; for uncrop
  * the layer with a transparent border is healed before GIMP is touched. */
+/* The dialog's preview of healing the selection: the layer and selection
+ * around it; NULLs if there is no selection over the layer. */
+static void
+read_preview_crop (GimpDrawable *drawable, GimpImage *image, GeglBuffer **pixels,
+                   GeglBuffer **mask)
+{
+  GeglRectangle hole;
+  TsHealLayer layer = { 0 };
+
+  *pixels = *mask = NULL;
+  if (gimp_selection_is_empty (image) ||
+      !gimp_drawable_mask_intersect (drawable, &hole.x, &hole.y, &hole.width, &hole.height))
+    return;
+  gimp_drawable_get_offsets (drawable, &layer.offset_x, &layer.offset_y);
+  layer.buffer = gimp_drawable_get_buffer (drawable);
+  layer.format = gimp_drawable_get_format (drawable);
+  layer.width = gimp_drawable_get_width (drawable);
+  layer.height = gimp_drawable_get_height (drawable);
+  layer.selection = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)));
+  ts_heal_preview_crop (&layer, &hole, pixels, mask);
+  g_object_unref (layer.buffer);
+  g_object_unref (layer.selection);
+}
+
 GimpValueArray *
 ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
               GimpDrawable **drawables, GimpProcedureConfig *config, gpointer data G_GNUC_UNUSED)
@@ -33,13 +57,20 @@ ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
   drawable = drawables[0];
   if (mode == GIMP_RUN_INTERACTIVE)
     {
+      TsDialogPreview preview = { TS_DIALOG_PREVIEW_HEAL, NULL, 0, NULL, NULL };
+
+      if (selection)
+        read_preview_crop (drawable, image, &preview.heal_pixels, &preview.heal_mask);
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
       ok = uncrop ? ts_dialog3 (procedure, config, _("Uncrop by Synthesis"), NULL,
                                 "percent", "quality", "seed", NULL)
                   : ts_dialog3 (procedure, config,
                                 selection ? _("Heal Selection by Synthesis")
-                                          : _("Heal Transparency by Synthesis"), NULL,
+                                          : _("Heal Transparency by Synthesis"),
+                                preview.heal_pixels ? &preview : NULL,
                                 "context", "sample-from", "quality", "seed", NULL);
+      g_clear_object (&preview.heal_pixels);
+      g_clear_object (&preview.heal_mask);
       if (!ok)
         return failure (procedure, GIMP_PDB_CANCEL, NULL);
     }

@@ -67,3 +67,32 @@ ts_plugin_heal_layer (const TsHealLayer *layer,
   g_clear_object (&mask);
   return healed;
 }
+
+gboolean
+ts_heal_preview_crop (const TsHealLayer   *layer,
+                      const GeglRectangle *hole,
+                      GeglBuffer         **pixels,
+                      GeglBuffer         **mask)
+{
+  /* As much texture around the hole as the hole is wide, and some even
+   * around a small one, within the layer. */
+  gint margin = MAX (MAX (hole->width, hole->height), TS_HEAL_PREVIEW_MIN_MARGIN);
+  gint x0 = MAX (0, hole->x - margin), y0 = MAX (0, hole->y - margin);
+  gint x1 = MIN (layer->width, hole->x + hole->width + margin);
+  gint y1 = MIN (layer->height, hole->y + hole->height + margin);
+  GeglRectangle crop = { x0, y0, x1 - x0, y1 - y0 };
+  GeglRectangle over = { layer->offset_x + x0, layer->offset_y + y0, crop.width, crop.height };
+
+  *pixels = *mask = NULL;
+  if (!layer->selection || crop.width < 1 || crop.height < 1)
+    return FALSE;
+  *pixels = ts_plugin_copy_buffer (layer->buffer, &crop, layer->format);
+  *mask = ts_plugin_copy_buffer (layer->selection, &over, babl_format ("Y' float"));
+  if (!*pixels || !*mask)
+    {
+      g_clear_object (pixels);
+      g_clear_object (mask);
+      return FALSE;
+    }
+  return TRUE;
+}

@@ -53,7 +53,7 @@ run_render (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
     {
       const GeglRectangle *extent = gegl_buffer_get_extent (exemplar.buffer);
       gboolean size_chosen;
-      TsDialogPreview preview = { &exemplar, 1, FALSE };
+      TsDialogPreview preview = { TS_DIALOG_PREVIEW_RENDER, &exemplar, 1, NULL, NULL };
 
       /* Twice the exemplar until the user has chosen a size once. */
       g_object_get (config, "size-chosen", &size_chosen, NULL);
@@ -191,7 +191,7 @@ run_solid (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_U
   ok = n_read == n;
   if (ok && mode == GIMP_RUN_INTERACTIVE)
     {
-      TsDialogPreview preview = { exemplars, n, TRUE };
+      TsDialogPreview preview = { TS_DIALOG_PREVIEW_SOLID, exemplars, n, NULL, NULL };
 
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
       if (!ts_dialog3 (procedure, config, _("Solid Texture"), &preview, "size", "path",

@@ -8,7 +8,7 @@ struct _TsPreview
 {
   GeglNode   *graph;
   GeglNode   *sink;
-  GeglBuffer *exemplars[3];  /* referenced while the worker reads them */
+  GeglBuffer *inputs[3];     /* referenced while the worker reads them */
   GeglBuffer *result;
   guchar     *pixels;
   gint        width, height;
@@ -29,11 +29,12 @@ process_preview (gpointer data)
   return NULL;
 }
 
-/* A preview of `width` x `height` whose op is `op`, fed by up to three
- * exemplars on its input, aux and aux2 pads; started in a worker thread. */
+/* A preview of `width` x `height` that `output` gives, from `op` fed by up
+ * to three buffers on its input, aux and aux2 pads; started in a worker
+ * thread. */
 static TsPreview *
-start (GeglNode *graph, GeglNode *op, const TsExemplar *exemplars, gint n, gint width,
-       gint height)
+start (GeglNode *graph, GeglNode *op, GeglNode *output, GeglBuffer **inputs, gint n,
+       gint width, gint height)
 {
   static const gchar *const pads[] = { "input", "aux", "aux2" };
   GeglRectangle rect = { 0, 0, width, height };
@@ -53,15 +54,15 @@ start (GeglNode *graph, GeglNode *op, const TsExemplar *exemplars, gint n, gint 
   for (gint i = 0; i < n && i < 3; i++)
     {
       GeglNode *source = gegl_node_new_child (graph, "operation", "gegl:buffer-source",
-                                              "buffer", exemplars[i].buffer, NULL);
+                                              "buffer", inputs[i], NULL);
 
-      preview->exemplars[i] = g_object_ref (exemplars[i].buffer);
+      preview->inputs[i] = g_object_ref (inputs[i]);
       ts_plugin_connect_pads (source, op, pads[i]);
     }
   preview->result = gegl_buffer_new (&rect, babl_format ("R'G'B'A float"));
   preview->sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
                                        "buffer", preview->result, NULL);
-  gegl_node_link (op, preview->sink);
+  gegl_node_link (output, preview->sink);
   preview->thread = g_thread_new ("texsynth-preview", process_preview, preview);
   return preview;
 }
@@ -77,7 +78,9 @@ ts_preview_start_render (const TsExemplar *exemplar, const TsRenderArgs *args)
                                       "tileable", args->tileable, "quality", args->quality,
                                       "seed", args->seed, NULL);
 
-  return start (graph, op, exemplar, 1, width, height);
+  GeglBuffer *inputs[1] = { exemplar->buffer };
+
+  return start (graph, op, op, inputs, 1, width, height);
 }
 
 TsPreview *
@@ -90,9 +93,32 @@ ts_preview_start_solid (const TsExemplar *exemplars, gint n_exemplars, const TsS
                                       "quality", args->quality, "seed", args->seed,
                                       "cell-structure", args->cell_structure, NULL);
 
+  GeglBuffer *inputs[3] = { NULL, NULL, NULL };
+
+  for (gint i = 0; i < n_exemplars && i < 3; i++)
+    inputs[i] = exemplars[i].buffer;
   /* The slice the new image shows on top. */
   ts_plugin_set_enum_by_nick (op, "axis", "x");
-  return start (graph, op, exemplars, n_exemplars, size, size);
+  return start (graph, op, op, inputs, MIN (n_exemplars, 3), size, size);
+}
+
+TsPreview *
+ts_preview_start_heal (GeglBuffer *pixels, GeglBuffer *mask, const TsHealArgs *args)
+{
+  const GeglRectangle *crop = gegl_buffer_get_extent (pixels);
+  gdouble ratio = MIN (1.0, (gdouble) TS_PREVIEW_SIDE / MAX (crop->width, crop->height));
+  GeglBuffer *inputs[2] = { pixels, mask };
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_HEAL,
+                                      "context", args->context,
+                                      "sample-from", args->sample_from,
+                                      "quality", args->quality, "seed", args->seed, NULL);
+  GeglNode *scale = gegl_node_new_child (graph, "operation", "gegl:scale-ratio",
+                                         "x", ratio, "y", ratio, NULL);
+
+  gegl_node_link (op, scale);
+  return start (graph, op, scale, inputs, 2, MAX (1, (gint) (crop->width * ratio)),
+                MAX (1, (gint) (crop->height * ratio)));
 }
 
 gboolean
@@ -118,7 +144,7 @@ ts_preview_free (TsPreview *preview)
   g_object_unref (preview->graph);
   g_object_unref (preview->result);
   for (gint i = 0; i < 3; i++)
-    g_clear_object (&preview->exemplars[i]);
+    g_clear_object (&preview->inputs[i]);
   g_free (preview->pixels);
   g_free (preview);
 }

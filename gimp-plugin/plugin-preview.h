@@ -32,6 +32,12 @@ TsPreview *ts_preview_start_solid (const TsExemplar  *exemplars,
                                    gint               n_exemplars,
                                    const TsSolidArgs *args);
 
+/* texsynth:heal on `pixels` with `mask` (the hole, "Y' float", same
+ * size), both referenced: the crop around a selection that
+ * ts_heal_preview_crop reads. The result is scaled down to fit
+ * TS_PREVIEW_SIDE when the crop is larger. */
+TsPreview *ts_preview_start_heal (GeglBuffer *pixels, GeglBuffer *mask, const TsHealArgs *args);
+
 /* Whether the run has finished; never blocks. */
 gboolean ts_preview_done (TsPreview *preview);
 

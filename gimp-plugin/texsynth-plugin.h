@@ -262,6 +262,17 @@ gboolean ts_plugin_heal_layer (const TsHealLayer *layer,
                                GeglBuffer       **result,
                                GError           **error);
 
+/* The heal dialog's preview: copies of the layer and the selection over
+ * it, cropped to `hole` (the selection's bounds in the layer) widened by
+ * as much as the hole's larger side, at least TS_HEAL_PREVIEW_MIN_MARGIN
+ * pixels; both at (0, 0). FALSE (and NULLs) without a selection or out of
+ * memory. */
+#define TS_HEAL_PREVIEW_MIN_MARGIN 32
+gboolean ts_heal_preview_crop (const TsHealLayer   *layer,
+                               const GeglRectangle *hole,
+                               GeglBuffer         **pixels,
+                               GeglBuffer         **mask);
+
 #define TS_PLUGIN_ERROR ts_plugin_error_quark ()
 GQuark ts_plugin_error_quark (void);
 
