@@ -13,12 +13,6 @@
 
 typedef struct
 {
-  int32_t source;
-  float   weight;
-} Vote;
-
-typedef struct
-{
   float   sum[TS_CHANNELS];
   float   weight;
   float   best_distance;
@@ -27,7 +21,10 @@ typedef struct
   bool    choosing;   /* second pass: pick the vote closest to the mean */
   bool    overflow;   /* more votes than the list holds                 */
   size_t  count;
-  Vote    list[TS_LOCAL_VOTES];
+  /* The listed votes' sources and values, one array per channel, so
+   * that their distances to the mean are computed side by side. */
+  int32_t source[TS_LOCAL_VOTES];
+  float   value[TS_CHANNELS][TS_LOCAL_VOTES];
 } Votes;
 
 static void
@@ -40,20 +37,60 @@ votes_reset (Votes *v)
   v->count = 0;
 }
 
+static inline float
+distance_to_mean (const Votes *v, float v0, float v1, float v2, float v3)
+{
+  float e0 = v0 - v->mean[0], e1 = v1 - v->mean[1], e2 = v2 - v->mean[2], e3 = v3 - v->mean[3];
+  return ((e0 * e0 + e1 * e1) + e2 * e2) + e3 * e3;
+}
+
 static void
 choose (Votes *v, const float *value, int32_t source)
 {
-  float d = 0.0f;
-  for (int c = 0; c < TS_CHANNELS; c++)
-    {
-      float e = value[c] - v->mean[c];
-      d += e * e;
-    }
+  float d = distance_to_mean (v, value[0], value[1], value[2], value[3]);
   if (d < v->best_distance)
     {
       v->best_distance = d;
       v->best_source = source;
     }
+}
+
+/* The listed vote nearest the mean, the first of equals (as `choose`
+ * one by one would find it): all distances first, then their minimum. */
+static void
+choose_listed (Votes *v)
+{
+  float d[TS_LOCAL_VOTES], least = INFINITY;
+
+  for (size_t i = 0; i < v->count; i++)
+    d[i] = distance_to_mean (v, v->value[0][i], v->value[1][i], v->value[2][i], v->value[3][i]);
+  for (size_t i = 0; i < v->count; i++)
+    least = d[i] < least ? d[i] : least;
+  if (!(least < v->best_distance))
+    return;
+  for (size_t i = 0; i < v->count; i++)
+    if (d[i] == least)
+      {
+        v->best_distance = least;
+        v->best_source = v->source[i];
+        return;
+      }
+}
+
+/* Appends a vote to the list, or notes that it is full. */
+static inline void
+list_vote (Votes *v, size_t *count, bool *overflow, int32_t source, const float *value)
+{
+  size_t i = *count;
+  if (i < TS_LOCAL_VOTES)
+    {
+      v->source[i] = source;
+      for (int c = 0; c < TS_CHANNELS; c++)
+        v->value[c][i] = value[c];
+      *count = i + 1;
+    }
+  else
+    *overflow = true;
 }
 
 /* `any_alpha`: count a transparent value too (the data term, so that
@@ -74,10 +111,7 @@ add_vote (Votes *v, const TsImage *ex, int32_t source, float weight, bool any_al
   for (int c = 0; c < TS_CHANNELS; c++)
     v->sum[c] += weight * value[c];
   v->weight += weight;
-  if (v->count < TS_LOCAL_VOTES)
-    v->list[v->count++] = (Vote) { source, weight };
-  else
-    v->overflow = true;
+  list_vote (v, &v->count, &v->overflow, source, value);
 }
 
 /* Every vote of the matched neighbourhoods covering (px, py), in a fixed
@@ -136,10 +170,7 @@ collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const T
                   s2 += weight * value[2];
                   s3 += weight * value[3];
                   total += weight;
-                  if (count < TS_LOCAL_VOTES)
-                    v->list[count++] = (Vote) { source, weight };
-                  else
-                    overflow = true;
+                  list_vote (v, &count, &overflow, source, value);
                 }
             }
         }
@@ -205,9 +236,7 @@ ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         v.best_distance = INFINITY;
         v.best_source = -1;
         if (!v.overflow)
-          for (size_t i = 0; i < v.count; i++)
-            choose (&v, state->exemplar->pixels + (size_t) v.list[i].source * TS_CHANNELS,
-                    v.list[i].source);
+          choose_listed (&v);
         else
           {
             collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);

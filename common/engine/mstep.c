@@ -57,18 +57,88 @@ frozen (const TsLevelState *state, ptrdiff_t cx, ptrdiff_t cy, size_t radius)
   return true;
 }
 
-/* ts_search_propose, unless this search has had the same proposal: in a
- * coherent region all neighbours propose one centre, and a repeat would
- * consider the same candidates in the same order, every one already
- * seen. `proposed` holds the visit of each exemplar pixel's last proposal
- * (cleared with the stamps when the visit counter wraps). */
+/* What the proposals of one M-step read instead of dividing exemplar
+ * indices: each exemplar pixel's coordinates, and its first k_use
+ * k-coherence candidates as centres already clamped for this patch. */
+typedef struct
+{
+  int32_t       *x, *y;
+  int32_t       *lists;   /* k entries per exemplar pixel, -1 after the last */
+  size_t         k;
+} Proposals;
+
+static void
+proposals_free (Proposals *p)
+{
+  free (p->x);
+  free (p->y);
+  free (p->lists);
+}
+
+static TsStatus
+proposals_init (Proposals *p, const TsImage *ex, const TsCandidateSet *cands, size_t k_use,
+                size_t radius)
+{
+  size_t w = ex->width, h = ex->height, n = w * h;
+
+  p->k = k_use < cands->k ? k_use : cands->k;
+  p->x = malloc (n * sizeof (int32_t));
+  p->y = malloc (n * sizeof (int32_t));
+  p->lists = malloc ((n * p->k > 0 ? n * p->k : 1) * sizeof (int32_t));
+  if (!p->x || !p->y || !p->lists)
+    {
+      proposals_free (p);
+      return TS_ERROR_OUT_OF_MEMORY;
+    }
+#pragma omp parallel for schedule(static) if (n * p->k >= 65536)
+  for (ptrdiff_t i = 0; i < (ptrdiff_t) n; i++)
+    {
+      const int32_t *list = cands->index + (size_t) i * cands->k;
+      int32_t *out = p->lists + (size_t) i * p->k;
+      size_t j = 0;
+
+      p->x[i] = (int32_t) ((size_t) i % w);
+      p->y[i] = (int32_t) ((size_t) i / w);
+      for (; j < p->k && list[j] >= 0; j++)
+        {
+          size_t qx = ts_clamp_centre ((ptrdiff_t) ((size_t) list[j] % w), w, radius);
+          size_t qy = ts_clamp_centre ((ptrdiff_t) ((size_t) list[j] / w), h, radius);
+          out[j] = (int32_t) (qy * w + qx);
+        }
+      for (; j < p->k; j++)
+        out[j] = -1;
+    }
+  return TS_OK;
+}
+
+/* The exemplar pixel `source`, shifted by (-dx, -dy), as a proposed
+ * centre, and the k-coherence candidates of that position. */
 static inline void
-propose_once (TsSearch *s, uint32_t *proposed, const TsCandidateSet *cands, size_t k_use,
-              int32_t source, ptrdiff_t dx, ptrdiff_t dy)
+propose (TsSearch *s, const Proposals *p, int32_t source, ptrdiff_t dx, ptrdiff_t dy)
 {
   size_t w = s->exemplar->width, h = s->exemplar->height;
-  ptrdiff_t cx = (ptrdiff_t) ((size_t) source % w) - dx;
-  ptrdiff_t cy = (ptrdiff_t) ((size_t) source / w) - dy;
+  ptrdiff_t cx = p->x[source] - dx, cy = p->y[source] - dy;
+  size_t lx = cx < 0 ? 0 : (cx >= (ptrdiff_t) w ? w - 1 : (size_t) cx);
+  size_t ly = cy < 0 ? 0 : (cy >= (ptrdiff_t) h ? h - 1 : (size_t) cy);
+  const int32_t *list = p->lists + (ly * w + lx) * p->k;
+
+  ts_search_consider_centre (s, ts_clamp_centre (cy, h, s->radius) * w
+                                + ts_clamp_centre (cx, w, s->radius));
+  for (size_t i = 0; i < p->k && list[i] >= 0; i++)
+    ts_search_consider_centre (s, (size_t) list[i]);
+}
+
+/* propose, unless this search has had the same proposal: in a coherent
+ * region all neighbours propose one centre, and a repeat would consider
+ * the same candidates in the same order, every one already seen.
+ * `proposed` holds the visit of each exemplar pixel's last proposal
+ * (cleared with the stamps when the visit counter wraps). */
+static inline void
+propose_once (TsSearch *s, uint32_t *proposed, const Proposals *p, int32_t source,
+              ptrdiff_t dx, ptrdiff_t dy)
+{
+  size_t w = s->exemplar->width, h = s->exemplar->height;
+  ptrdiff_t cx = p->x[source] - dx, cy = p->y[source] - dy;
 
   if (cx >= 0 && cy >= 0 && cx < (ptrdiff_t) w && cy < (ptrdiff_t) h)
     {
@@ -77,52 +147,54 @@ propose_once (TsSearch *s, uint32_t *proposed, const TsCandidateSet *cands, size
         return;
       *mark = s->visit;
     }
-  ts_search_propose (s, cands, k_use, source, dx, dy);
+  propose (s, p, source, dx, dy);
 }
 
 static void
-search_centre (TsSearch *s, uint32_t *proposed, const TsLevelState *state, const TsPass *pass,
-               size_t k_use, uint32_t seed_stream, ptrdiff_t cx, ptrdiff_t cy, size_t centre_index)
+search_centre (TsSearch *s, uint32_t *proposed, const Proposals *p, const TsLevelState *state,
+               const TsPass *pass, uint32_t seed_stream, ptrdiff_t cx, ptrdiff_t cy,
+               size_t centre_index)
 {
   ptrdiff_t r = (ptrdiff_t) s->radius, step = (ptrdiff_t) pass->propose_step;
   ptrdiff_t first = -(r / step) * step;
   size_t own = (size_t) cy * state->width + (size_t) cx;
+  /* Away from the borders the neighbours need no border rule. */
+  bool inside = cx >= r && cy >= r && cx + r < (ptrdiff_t) state->width
+                && cy + r < (ptrdiff_t) state->height;
 
   /* The centre's own source first: usually the best, so the early abort
    * of every later candidate has a tight bound. */
   if (state->source[own] >= 0)
-    propose_once (s, proposed, state->candidates, k_use, state->source[own], 0, 0);
+    propose_once (s, proposed, p, state->source[own], 0, 0);
   for (ptrdiff_t dy = first; dy <= r; dy += step)
     {
-      size_t y = ts_border_index (cy + dy, state->height, state->wrap_y);
+      size_t y = inside ? (size_t) (cy + dy) : ts_border_index (cy + dy, state->height, state->wrap_y);
+      const int32_t *row = state->source + y * state->width;
       for (ptrdiff_t dx = first; dx <= r; dx += step)
         {
-          size_t x = ts_border_index (cx + dx, state->width, state->wrap_x);
-          int32_t source = state->source[y * state->width + x];
+          size_t x = inside ? (size_t) (cx + dx) : ts_border_index (cx + dx, state->width, state->wrap_x);
+          int32_t source = row[x];
           if (source >= 0)
-            propose_once (s, proposed, state->candidates, k_use, source, dx, dy);
+            propose_once (s, proposed, p, source, dx, dy);
         }
     }
   if (state->preserve_source)
-    {
-      size_t y = (size_t) cy, x = (size_t) cx;
-      ts_search_propose (s, state->candidates, k_use, state->preserve_source[y * state->width + x], 0, 0);
-    }
+    propose (s, p, state->preserve_source[own], 0, 0);
   if (s->best_centre < 0)
     {
       /* Nothing usable around (transparent sources): a random opaque
        * pixel keeps the search going. */
       uint64_t r64 = ts_random (seed_stream, 0, 0, centre_index, 7);
       int32_t q = state->opaque[ts_random_below (r64, state->opaque_count)];
-      ts_search_propose (s, state->candidates, 0, q, 0, 0);
+      ts_search_consider (s, p->x[q], p->y[q]);
     }
 }
 
 /* A few random exemplar pixels whose guide matches the target's at the
  * centre, and their k-coherence candidates. */
 static void
-propose_by_guide (TsSearch *s, const TsLevelState *state, size_t k_use, uint32_t seed_stream,
-                  ptrdiff_t cx, ptrdiff_t cy, size_t centre_index)
+propose_by_guide (TsSearch *s, const Proposals *p, const TsLevelState *state,
+                  uint32_t seed_stream, ptrdiff_t cx, ptrdiff_t cy, size_t centre_index)
 {
   const TsGuideLevel *g = state->guide;
   size_t bin = ts_guide_target_bin (g, (size_t) cx, (size_t) cy);
@@ -131,8 +203,7 @@ propose_by_guide (TsSearch *s, const TsLevelState *state, size_t k_use, uint32_t
   for (uint32_t i = 0; i < TS_GUIDE_PROPOSALS; i++)
     {
       uint64_t r = ts_random (seed_stream, 0, i, centre_index, 8);
-      ts_search_propose (s, state->candidates, k_use,
-                         g->bin_member[first + ts_random_below (r, members)], 0, 0);
+      propose (s, p, g->bin_member[first + ts_random_below (r, members)], 0, 0);
     }
 }
 
@@ -145,7 +216,10 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
   size_t ex_pixels = ts_image_pixel_count (ex);
   float pixels_per_patch = (float) (pass->patch * pass->patch);
   int failed = 0;
+  Proposals proposals;
 
+  if (proposals_init (&proposals, ex, state->candidates, k_use, radius) != TS_OK)
+    return TS_ERROR_OUT_OF_MEMORY;
 #pragma omp parallel
   {
     TsSearch s = { ex, pass->patch, radius, NULL, state->penalty, NULL, 0, 0.0f, -1, NULL };
@@ -186,9 +260,9 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         ts_search_begin (&s, ex_pixels);
         if (s.guide)
           ts_guide_query_gather (s.guide, cx, cy, state->wrap_x, state->wrap_y);
-        search_centre (&s, proposed, state, pass, k_use, seed_stream, cx, cy, (size_t) i);
+        search_centre (&s, proposed, &proposals, state, pass, seed_stream, cx, cy, (size_t) i);
         if (s.guide)
-          propose_by_guide (&s, state, k_use, seed_stream, cx, cy, (size_t) i);
+          propose_by_guide (&s, &proposals, state, seed_stream, cx, cy, (size_t) i);
         matches[i].centre = s.best_centre;
         matches[i].distance = s.best;
         /* |x - z|^(r-2) on the per-pixel RMS distance; the epsilon bounds
@@ -201,6 +275,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
     free (proposed);
     ts_guide_query_free (&guide_query);
   }
+  proposals_free (&proposals);
   if (failed)
     return TS_ERROR_OUT_OF_MEMORY;
   return ts_cancel_requested (state->cancel) ? TS_ERROR_CANCELLED : TS_OK;

@@ -4,6 +4,7 @@
 #define TS_SSD_H
 
 #include <stddef.h>
+#include <string.h>
 
 /* Four independent lanes (one per channel) vectorise without reassociation;
  * every partial total uses the same combination as the final one, so a
@@ -20,5 +21,63 @@ ts_lanes_add (float *acc, const float *a, const float *b, size_t count)
         acc[c] += d * d;
       }
 }
+
+/* Sum of squared differences of `pixels` four-channel pixels, for the
+ * M-steps' patch rows. Even and odd pixels add into two sets of lanes:
+ * two independent chains of additions, where one would be bound by the
+ * adds' latency. Any row gives the same total wherever it is used. */
+#if defined(__GNUC__)
+/* One pixel as one vector (GCC and clang): lane-wise arithmetic, the same
+ * values as four floats. */
+typedef float TsPixelLanes __attribute__ ((vector_size (4 * sizeof (float))));
+
+static inline TsPixelLanes
+ts_pixel_lanes (const float *p)
+{
+  TsPixelLanes v;
+  memcpy (&v, p, sizeof v);
+  return v;
+}
+
+static inline float
+ts_pixels_ssd (const float *a, const float *b, size_t pixels)
+{
+  TsPixelLanes even = { 0.0f, 0.0f, 0.0f, 0.0f }, odd = even;
+  size_t i = 0;
+
+  for (; i + 1 < pixels; i += 2)
+    {
+      TsPixelLanes d0 = ts_pixel_lanes (a + 4 * i) - ts_pixel_lanes (b + 4 * i);
+      TsPixelLanes d1 = ts_pixel_lanes (a + 4 * i + 4) - ts_pixel_lanes (b + 4 * i + 4);
+      even += d0 * d0;
+      odd += d1 * d1;
+    }
+  if (i < pixels)
+    {
+      TsPixelLanes d = ts_pixel_lanes (a + 4 * i) - ts_pixel_lanes (b + 4 * i);
+      even += d * d;
+    }
+  even += odd;
+  return (even[0] + even[1]) + (even[2] + even[3]);
+}
+#else
+static inline float
+ts_pixels_ssd (const float *a, const float *b, size_t pixels)
+{
+  float even[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, odd[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  size_t i = 0;
+
+  for (; i + 1 < pixels; i += 2)
+    {
+      ts_lanes_add (even, a + 4 * i, b + 4 * i, 4);
+      ts_lanes_add (odd, a + 4 * i + 4, b + 4 * i + 4, 4);
+    }
+  if (i < pixels)
+    ts_lanes_add (even, a + 4 * i, b + 4 * i, 4);
+  for (size_t c = 0; c < 4; c++)
+    even[c] += odd[c];
+  return TS_LANES_TOTAL (even);
+}
+#endif
 
 #endif
