@@ -132,15 +132,11 @@ collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const T
   for (size_t vy = gy->virtual_start[py]; vy < gy->virtual_start[py + 1]; vy++)
     {
       ptrdiff_t ty = gy->virtual_coord[vy];
-      size_t jy_lo, jy_hi;
-      if (!ts_axis_grid_covering (gy, ty, &jy_lo, &jy_hi))
-        continue;
+      size_t jy_lo = gy->cover_lo[vy], jy_hi = gy->cover_hi[vy];
       for (size_t vx = gx->virtual_start[px]; vx < gx->virtual_start[px + 1]; vx++)
         {
           ptrdiff_t tx = gx->virtual_coord[vx];
-          size_t jx_lo, jx_hi;
-          if (!ts_axis_grid_covering (gx, tx, &jx_lo, &jx_hi))
-            continue;
+          size_t jx_lo = gx->cover_lo[vx], jx_hi = gx->cover_hi[vx];
           for (size_t jy = jy_lo; jy <= jy_hi; jy++)
             {
               ptrdiff_t dy = ty - ts_axis_grid_centre (gy, jy);

@@ -19,7 +19,9 @@ ts_axis_grid_init (TsAxisGrid *grid, size_t n, size_t radius, size_t spacing,
   grid->centres = (n - grid->offset + spacing - 1) / spacing;
   grid->virtual_start = calloc (n + 1, sizeof (size_t));
   grid->virtual_coord = malloc (span * sizeof (ptrdiff_t));
-  if (!grid->virtual_start || !grid->virtual_coord)
+  grid->cover_lo = malloc (span * sizeof (size_t));
+  grid->cover_hi = malloc (span * sizeof (size_t));
+  if (!grid->virtual_start || !grid->virtual_coord || !grid->cover_lo || !grid->cover_hi)
     {
       ts_axis_grid_free (grid);
       return TS_ERROR_OUT_OF_MEMORY;
@@ -45,6 +47,12 @@ ts_axis_grid_init (TsAxisGrid *grid, size_t n, size_t radius, size_t spacing,
       }
     free (fill);
   }
+  for (size_t i = 0; i < span; i++)
+    if (!ts_axis_grid_covering (grid, grid->virtual_coord[i], &grid->cover_lo[i], &grid->cover_hi[i]))
+      {
+        grid->cover_lo[i] = 1;
+        grid->cover_hi[i] = 0;
+      }
   return TS_OK;
 }
 
@@ -53,6 +61,10 @@ ts_axis_grid_free (TsAxisGrid *grid)
 {
   free (grid->virtual_start);
   free (grid->virtual_coord);
+  free (grid->cover_lo);
+  free (grid->cover_hi);
   grid->virtual_start = NULL;
   grid->virtual_coord = NULL;
+  grid->cover_lo = NULL;
+  grid->cover_hi = NULL;
 }

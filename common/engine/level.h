@@ -42,6 +42,9 @@ typedef struct
   size_t     centres;     /* number of centres                     */
   size_t    *virtual_start; /* n + 1 entries into virtual_coord    */
   ptrdiff_t *virtual_coord;
+  /* Per virtual_coord entry: the centres within radius of it,
+   * [cover_lo, cover_hi], or cover_lo > cover_hi if none. */
+  size_t    *cover_lo, *cover_hi;
 } TsAxisGrid;
 
 typedef struct
