@@ -1,6 +1,7 @@
 /* E-step: robust voting of the matched neighbourhoods, keeping the vote
  * closest to the weighted mean (sharp output, exact source coordinates).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "clones.h"
 #include "level.h"
 
 #include <math.h>
@@ -193,59 +194,70 @@ collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxis
     collect_pass (v, state, gx, gy, matches, histogram, px, py, false);
 }
 
+/* Votes for every pixel of row y; returns how many changed source. */
+TS_VECTOR_CLONES static size_t
+vote_row (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+          const TsMatch *matches, const TsHistogram *histogram, size_t y)
+{
+  size_t changed = 0;
+
+  for (size_t x = 0; x < state->width; x++)
+    {
+      size_t p = y * state->width + x;
+      Votes v;
+      float keep = 0.0f;
+
+      /* Weight 1 keeps the pixel at its initial source (see start_sources). */
+      if (state->preserve && state->preserve[p] >= 1.0f)
+        continue;
+      votes_reset (&v);
+      collect (&v, state, gx, gy, matches, histogram, x, y);
+      if (state->preserve && state->preserve[p] > 0.0f)
+        {
+          /* Data term: the initial source votes with a share of the
+           * total weight that grows without bound as preserve -> 1. */
+          float w = state->preserve[p];
+          keep = (v.weight > 0.0f ? v.weight : 1.0f) * w / (1.0f - w + 1e-4f);
+          add_vote (&v, state->exemplar, state->preserve_source[p], keep, true);
+        }
+      if (!(v.weight > 0.0f))
+        continue;
+      for (int c = 0; c < TS_CHANNELS; c++)
+        v.mean[c] = v.sum[c] / v.weight;
+      v.choosing = true;
+      v.best_distance = INFINITY;
+      v.best_source = -1;
+      if (!v.overflow)
+        choose_listed (&v);
+      else
+        {
+          collect (&v, state, gx, gy, matches, histogram, x, y);
+          if (keep > 0.0f)
+            add_vote (&v, state->exemplar, state->preserve_source[p], keep, true);
+        }
+      if (v.best_source < 0)
+        continue;
+      if (state->disagreement)
+        state->disagreement[p] = v.best_distance;
+      if (v.best_source != state->source[p])
+        changed++;
+      state->source[p] = v.best_source;
+    }
+  return changed;
+}
+
 size_t
 ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
           const TsMatch *matches, const TsHistogram *histogram)
 {
   size_t changed = 0;
 
-  /* A cancel is polled at the start of each row (x == 0). */
   /* Dynamic rows: a thread the machine preempts holds up no barrier.
    * Each pixel is computed by one thread alone, so any order gives the
-   * same result. */
+   * same result. A cancel is polled at the start of each row. */
 #pragma omp parallel for schedule(dynamic, 4) reduction(+:changed)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) state->height; y++)
-    for (size_t x = 0; x < state->width && !(x == 0 && ts_cancel_poll (state->cancel)); x++)
-      {
-        size_t p = (size_t) y * state->width + x;
-        Votes v;
-        float keep = 0.0f;
-
-        /* Weight 1 keeps the pixel at its initial source (see start_sources). */
-        if (state->preserve && state->preserve[p] >= 1.0f)
-          continue;
-        votes_reset (&v);
-        collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);
-        if (state->preserve && state->preserve[p] > 0.0f)
-          {
-            /* Data term: the initial source votes with a share of the
-             * total weight that grows without bound as preserve -> 1. */
-            float w = state->preserve[p];
-            keep = (v.weight > 0.0f ? v.weight : 1.0f) * w / (1.0f - w + 1e-4f);
-            add_vote (&v, state->exemplar, state->preserve_source[p], keep, true);
-          }
-        if (!(v.weight > 0.0f))
-          continue;
-        for (int c = 0; c < TS_CHANNELS; c++)
-          v.mean[c] = v.sum[c] / v.weight;
-        v.choosing = true;
-        v.best_distance = INFINITY;
-        v.best_source = -1;
-        if (!v.overflow)
-          choose_listed (&v);
-        else
-          {
-            collect (&v, state, gx, gy, matches, histogram, x, (size_t) y);
-            if (keep > 0.0f)
-              add_vote (&v, state->exemplar, state->preserve_source[p], keep, true);
-          }
-        if (v.best_source < 0)
-          continue;
-        if (state->disagreement)
-          state->disagreement[p] = v.best_distance;
-        if (v.best_source != state->source[p])
-          changed++;
-        state->source[p] = v.best_source;
-      }
+    if (!ts_cancel_poll (state->cancel))
+      changed += vote_row (state, gx, gy, matches, histogram, (size_t) y);
   return changed;
 }

@@ -1,6 +1,7 @@
 /* M-step: k-coherence search of the best exemplar neighbourhood for each
  * output neighbourhood centre.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "clones.h"
 #include "level.h"
 #include "kcoherence.h"
 #include "rng.h"
@@ -150,7 +151,7 @@ propose_once (TsSearch *s, uint32_t *proposed, const Proposals *p, int32_t sourc
   propose (s, p, source, dx, dy);
 }
 
-static void
+TS_VECTOR_CLONES static void
 search_centre (TsSearch *s, uint32_t *proposed, const Proposals *p, const TsLevelState *state,
                const TsPass *pass, uint32_t seed_stream, ptrdiff_t cx, ptrdiff_t cy,
                size_t centre_index)

@@ -27,35 +27,36 @@ ts_lanes_add (float *acc, const float *a, const float *b, size_t count)
  * two independent chains of additions, where one would be bound by the
  * adds' latency. Any row gives the same total wherever it is used. */
 #if defined(__GNUC__)
-/* One pixel as one vector (GCC and clang): lane-wise arithmetic, the same
- * values as four floats. */
+/* A pair of pixels, and one pixel, as vectors (GCC and clang): lane-wise
+ * arithmetic, the same values as with single floats, whether the target
+ * has 8- or 4-float registers. */
+typedef float TsPixelPairLanes __attribute__ ((vector_size (8 * sizeof (float))));
 typedef float TsPixelLanes __attribute__ ((vector_size (4 * sizeof (float))));
-
-static inline TsPixelLanes
-ts_pixel_lanes (const float *p)
-{
-  TsPixelLanes v;
-  memcpy (&v, p, sizeof v);
-  return v;
-}
 
 static inline float
 ts_pixels_ssd (const float *a, const float *b, size_t pixels)
 {
-  TsPixelLanes even = { 0.0f, 0.0f, 0.0f, 0.0f }, odd = even;
+  TsPixelPairLanes pair = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f };
+  TsPixelLanes even, odd, last;
   size_t i = 0;
 
   for (; i + 1 < pixels; i += 2)
     {
-      TsPixelLanes d0 = ts_pixel_lanes (a + 4 * i) - ts_pixel_lanes (b + 4 * i);
-      TsPixelLanes d1 = ts_pixel_lanes (a + 4 * i + 4) - ts_pixel_lanes (b + 4 * i + 4);
-      even += d0 * d0;
-      odd += d1 * d1;
+      TsPixelPairLanes pa, pb, d;
+      memcpy (&pa, a + 4 * i, sizeof pa);
+      memcpy (&pb, b + 4 * i, sizeof pb);
+      d = pa - pb;
+      pair += d * d;
     }
+  even = (TsPixelLanes) { pair[0], pair[1], pair[2], pair[3] };
+  odd = (TsPixelLanes) { pair[4], pair[5], pair[6], pair[7] };
   if (i < pixels)
     {
-      TsPixelLanes d = ts_pixel_lanes (a + 4 * i) - ts_pixel_lanes (b + 4 * i);
-      even += d * d;
+      TsPixelLanes la, lb;
+      memcpy (&la, a + 4 * i, sizeof la);
+      memcpy (&lb, b + 4 * i, sizeof lb);
+      last = la - lb;
+      even += last * last;
     }
   even += odd;
   return (even[0] + even[1]) + (even[2] + even[3]);
