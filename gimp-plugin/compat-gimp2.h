@@ -1,5 +1,5 @@
 /* GIMP 2.10 glue shared by its procedures (main-gimp2.c, heal-gimp2.c,
- * layers-gimp2.c): a procedure's outcome, reading layers and making
+ * layers-gimp2.c, guided-gimp2.c): a procedure's outcome, reading layers and making
  * images.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
@@ -13,6 +13,7 @@ typedef struct
   GimpPDBStatusType status;
   gchar            *message;   /* for the caller when status is an error */
   gint32            new_image; /* -1 if none */
+  gint32            new_layer; /* -1 if none */
 } Outcome;
 
 /* Records a failure (status and message, which it takes) and returns FALSE. */

@@ -153,3 +153,31 @@ check_drawables (GimpDrawable **drawables, gint max)
       return g_strdup (_("The drawable must be a layer."));
   return ts_plugin_check_ops (TS_OP_SYNTHESIZE, TS_OP_TILEABLE, NULL);
 }
+
+#define AUTHOR    "texsynth contributors"
+#define COPYRIGHT "texsynth contributors (GPL-3.0-or-later)"
+#define DATE      "2025"
+
+/* `quality_texts`: the plugin-args.c entry whose label and tooltip the
+ * "quality" argument shows. */
+void
+ts_add_quality_and_seed3 (GimpProcedure *procedure, const gchar *quality_texts)
+{
+  gimp_procedure_add_int_argument (procedure, "quality", ts_arg_label (quality_texts),
+                                   ts_arg_tooltip (quality_texts), TS_PLUGIN_MIN_QUALITY,
+                                   TS_PLUGIN_MAX_QUALITY, TS_PLUGIN_DEFAULT_QUALITY,
+                                   G_PARAM_READWRITE);
+  gimp_procedure_add_int_argument (procedure, "seed", ts_arg_label ("seed"),
+                                   ts_arg_tooltip ("seed"), 0, G_MAXINT, 0, G_PARAM_READWRITE);
+}
+
+void
+ts_describe3 (GimpProcedure *procedure, const gchar *label, const gchar *menu,
+              const gchar *blurb, const gchar *help)
+{
+  gimp_procedure_set_image_types (procedure, "RGB*, GRAY*, INDEXED*");
+  gimp_procedure_set_menu_label (procedure, label);
+  gimp_procedure_add_menu_path (procedure, menu);
+  gimp_procedure_set_documentation (procedure, blurb, help, gimp_procedure_get_name (procedure));
+  gimp_procedure_set_attribution (procedure, AUTHOR, COPYRIGHT, DATE);
+}

@@ -1,6 +1,6 @@
 /* GIMP 3 glue shared by its procedures (main-gimp3.c, heal-gimp3.c,
- * layers-gimp3.c): a run's return values, the drawables' checks, reading
- * layers and making images.
+ * layers-gimp3.c, guided-gimp3.c): describing procedures, a run's return
+ * values, the drawables' checks, reading layers and making images.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #ifndef TEXSYNTH_COMPAT_GIMP3_H
@@ -35,5 +35,13 @@ GimpImage *new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gch
 /* An interactive run's result: shown, and returned as the new image. */
 GimpValueArray *success_with_image (GimpProcedure *procedure, GimpRunMode mode,
                                     GimpImage *image);
+
+/* A procedure's menu label and path, documentation and attribution; its
+ * image types are those of every texsynth procedure. */
+void ts_describe3 (GimpProcedure *procedure, const gchar *label, const gchar *menu,
+                   const gchar *blurb, const gchar *help);
+/* The "quality" and "seed" arguments; `quality_texts`: the plugin-args.c
+ * entry whose label and tooltip "quality" shows. */
+void ts_add_quality_and_seed3 (GimpProcedure *procedure, const gchar *quality_texts);
 
 #endif /* TEXSYNTH_COMPAT_GIMP3_H */

@@ -348,3 +348,70 @@ ts_solid_dialog2 (TsSolidArgs *args, const TsExemplar *exemplar)
   args->seed = (gint) (seed & G_MAXINT);
   return ok;
 }
+
+/* --- the guided procedures --------------------------------------------- */
+
+/* Any layer but the one the procedure runs on. */
+static gboolean
+not_target (gint32 image G_GNUC_UNUSED, gint32 item, gpointer data)
+{
+  return item != GPOINTER_TO_INT (data);
+}
+
+/* A layer picked from every open image; -1 in *layer picks the first. */
+static void
+form_layer (Form *form, const gchar *name, gint32 target, gint32 *layer)
+{
+  gchar *label = label_text (name);
+  GtkWidget *combo = gimp_layer_combo_box_new (not_target, GINT_TO_POINTER (target));
+
+  gimp_int_combo_box_connect (GIMP_INT_COMBO_BOX (combo), *layer,
+                              G_CALLBACK (gimp_int_combo_box_get_active), layer);
+  if (!gimp_int_combo_box_get_active (GIMP_INT_COMBO_BOX (combo), layer))
+    *layer = -1;
+  gimp_help_set_help_data (combo, ts_arg_tooltip (name), NULL);
+  gimp_table_attach_aligned (GTK_TABLE (form->table), 0, form->rows++, label, 0.0, 0.5,
+                             combo, 2, FALSE);
+  g_free (label);
+}
+
+/* A slider with a spin button, two decimals; `soft_max` bounds the slider. */
+static void
+form_double (Form *form, const gchar *name, gdouble *value, gdouble min, gdouble max,
+             gdouble soft_max)
+{
+  gchar *label = label_text (name);
+  GtkObject *adjustment;
+
+  adjustment = gimp_scale_entry_new (GTK_TABLE (form->table), 0, form->rows++, label, 200, 6,
+                                     *value, min, MIN (max, soft_max), 0.1, 1.0, 2,
+                                     soft_max >= max, min, max, ts_arg_tooltip (name), NULL);
+  g_signal_connect (adjustment, "value-changed", G_CALLBACK (gimp_double_adjustment_update),
+                    value);
+  g_free (label);
+}
+
+gboolean
+ts_guided_dialog2 (const gchar *procedure, TsGuidedArgs *args, gint32 target, gint32 *exemplar,
+                   gint32 *guide)
+{
+  Form form;
+  guint32 seed = (guint32) args->seed;
+  gboolean randomize = FALSE, ok;
+
+  form_begin (&form, guide ? _("Texture by Numbers") : _("Style Transfer by Synthesis"),
+              procedure);
+  form_layer (&form, guide ? "exemplar" : "style", target, exemplar);
+  if (guide)
+    form_layer (&form, "exemplar-guide", target, guide);
+  form_double (&form, guide ? "guide-weight" : "style-weight", &args->guide_weight, 0.0,
+               TS_PLUGIN_MAX_GUIDE_WEIGHT, 10.0);
+  if (guide)
+    form_toggle (&form, "tileable", &args->tileable);
+  form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
+            TS_PLUGIN_MAX_QUALITY);
+  form_seed (&form, &seed, &randomize);
+  ok = form_run (&form);
+  args->seed = (gint) (seed & G_MAXINT);
+  return ok;
+}

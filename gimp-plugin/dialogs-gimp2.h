@@ -6,6 +6,7 @@
 #define TEXSYNTH_DIALOGS_GIMP2_H
 
 #include "texsynth-plugin.h"
+#include "guided-plugin.h"
 
 /* The render and solid dialogs preview a small run on `exemplar`. */
 gboolean ts_render_dialog2   (TsRenderArgs *args, const TsExemplar *exemplar);
@@ -17,5 +18,11 @@ gboolean ts_solid_dialog2    (TsSolidArgs *args, const TsExemplar *exemplar);
  * preview heals them. */
 gboolean ts_heal_dialog2     (TsHealArgs *args, const gchar *procedure, const gchar *title,
                               GeglBuffer *preview_pixels, GeglBuffer *preview_mask);
+
+/* Texture by numbers (`guide` not NULL) or style transfer: the exemplar
+ * (or style) layer and the exemplar's guide are picked from every open
+ * image but `target`; -1 picks the first. */
+gboolean ts_guided_dialog2   (const gchar *procedure, TsGuidedArgs *args, gint32 target,
+                              gint32 *exemplar, gint32 *guide);
 
 #endif /* TEXSYNTH_DIALOGS_GIMP2_H */

@@ -1,6 +1,6 @@
 /* GIMP 2.10's plug-in: procedure registration, the run dispatcher and the
- * render, tileable and solid procedures (the heal and material-set ones
- * are in heal-gimp2.c and layers-gimp2.c). The procedures' logic is in
+ * render, tileable and solid procedures (the heal, material-set and
+ * guided ones are in heal-gimp2.c, layers-gimp2.c and guided-gimp2.c). The procedures' logic is in
  * plugin-args.c and plugin-run.c, shared with GIMP 3.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
@@ -11,6 +11,7 @@
 #include "dialogs-gimp2.h"
 #include "heal-gimp2.h"
 #include "layers-gimp2.h"
+#include "guided-gimp2.h"
 
 static void query (void);
 static void run   (const gchar *name, gint n_params, const GimpParam *params,
@@ -169,6 +170,7 @@ query (void)
                           "RGB*, GRAY*", GIMP_PLUGIN, G_N_ELEMENTS (uncrop_args), 0, uncrop_args,
                           NULL);
   gimp_plugin_menu_register (TS_PROC_UNCROP, "<Image>/Filters/Enhance");
+  ts_install_guided2 ();
 }
 
 /* --- the procedures ---------------------------------------------------- */
@@ -404,7 +406,7 @@ run (const gchar      *name,
      GimpParam       **return_vals)
 {
   static GimpParam values[2];
-  Outcome outcome = { GIMP_PDB_SUCCESS, NULL, -1 };
+  Outcome outcome = { .status = GIMP_PDB_SUCCESS, .new_image = -1, .new_layer = -1 };
   GimpRunMode mode = n_params > 0 ? params[0].data.d_int32 : GIMP_RUN_NONINTERACTIVE;
   gchar *message;
 
@@ -430,6 +432,8 @@ run (const gchar      *name,
   else if (g_str_equal (name, TS_PROC_HEAL_SELECTION) || g_str_equal (name, TS_PROC_HEAL_TRANSPARENCY)
            || g_str_equal (name, TS_PROC_UNCROP))
     ts_run_heal2 (name, mode, params, n_params, &outcome);
+  else if (g_str_equal (name, TS_PROC_BY_NUMBERS) || g_str_equal (name, TS_PROC_STYLE))
+    ts_run_guided2 (name, mode, params, n_params, &outcome);
   else
     fail (&outcome, GIMP_PDB_CALLING_ERROR, g_strdup_printf (_("Unknown procedure %s."), name));
 
@@ -445,6 +449,12 @@ run (const gchar      *name,
     {
       values[1].type = GIMP_PDB_IMAGE;
       values[1].data.d_image = outcome.new_image;
+      *n_return_vals = 2;
+    }
+  else if (outcome.status == GIMP_PDB_SUCCESS && outcome.new_layer >= 0)
+    {
+      values[1].type = GIMP_PDB_LAYER;
+      values[1].data.d_layer = outcome.new_layer;
       *n_return_vals = 2;
     }
   else if (outcome.status != GIMP_PDB_SUCCESS && outcome.message)

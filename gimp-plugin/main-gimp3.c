@@ -1,6 +1,6 @@
 /* GIMP 3's plug-in: the GimpPlugIn class, procedure registration and the
- * render, tileable and solid procedures (the heal and material-set ones
- * are in heal-gimp3.c and layers-gimp3.c). The procedures' logic is in
+ * render, tileable and solid procedures (the heal, material-set and
+ * guided ones are in heal-gimp3.c, layers-gimp3.c and guided-gimp3.c). The procedures' logic is in
  * plugin-args.c and plugin-run.c, shared with GIMP 2.10.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
@@ -12,6 +12,7 @@
 #include "compat-gimp3.h"
 #include "dialogs-gimp3.h"
 #include "heal-gimp3.h"
+#include "guided-gimp3.h"
 #include "layers-gimp3.h"
 
 #define TS_TYPE_PLUG_IN (ts_plug_in_get_type ())
@@ -25,10 +26,6 @@ struct _TsPlugIn
 G_DEFINE_TYPE (TsPlugIn, ts_plug_in, GIMP_TYPE_PLUG_IN)
 
 GIMP_MAIN (TS_TYPE_PLUG_IN)
-
-#define AUTHOR    "texsynth contributors"
-#define COPYRIGHT "texsynth contributors (GPL-3.0-or-later)"
-#define DATE      "2025"
 
 /* --- the procedures ---------------------------------------------------- */
 
@@ -242,19 +239,6 @@ run_solid (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_U
 
 /* --- registration -------------------------------------------------------- */
 
-/* `quality_texts`: the plugin-args.c entry whose label and tooltip the
- * "quality" argument shows. */
-static void
-add_quality_and_seed (GimpProcedure *procedure, const gchar *quality_texts)
-{
-  gimp_procedure_add_int_argument (procedure, "quality", ts_arg_label (quality_texts),
-                                   ts_arg_tooltip (quality_texts), TS_PLUGIN_MIN_QUALITY,
-                                   TS_PLUGIN_MAX_QUALITY, TS_PLUGIN_DEFAULT_QUALITY,
-                                   G_PARAM_READWRITE);
-  gimp_procedure_add_int_argument (procedure, "seed", ts_arg_label ("seed"),
-                                   ts_arg_tooltip ("seed"), 0, G_MAXINT, 0, G_PARAM_READWRITE);
-}
-
 /* The arguments and return value of the procedures that make a new
  * image (render and render-layers). */
 static void
@@ -268,7 +252,7 @@ add_render_arguments (GimpProcedure *procedure, const gchar *new_image_blurb)
                                    G_PARAM_READWRITE);
   gimp_procedure_add_boolean_argument (procedure, "tileable", ts_arg_label ("tileable"),
                                        ts_arg_tooltip ("tileable"), FALSE, G_PARAM_READWRITE);
-  add_quality_and_seed (procedure, "quality");
+  ts_add_quality_and_seed3 (procedure, "quality");
   gimp_procedure_add_boolean_aux_argument (procedure, "size-chosen", "Size chosen",
                                            "Whether the user has chosen a size once",
                                            FALSE, G_PARAM_READWRITE);
@@ -276,31 +260,22 @@ add_render_arguments (GimpProcedure *procedure, const gchar *new_image_blurb)
                                          new_image_blurb, FALSE, G_PARAM_READWRITE);
 }
 
-static void
-describe (GimpProcedure *procedure, const gchar *label, const gchar *menu,
-          const gchar *blurb, const gchar *help)
-{
-  gimp_procedure_set_image_types (procedure, "RGB*, GRAY*, INDEXED*");
-  gimp_procedure_set_menu_label (procedure, label);
-  gimp_procedure_add_menu_path (procedure, menu);
-  gimp_procedure_set_documentation (procedure, blurb, help, gimp_procedure_get_name (procedure));
-  gimp_procedure_set_attribution (procedure, AUTHOR, COPYRIGHT, DATE);
-}
-
 static GimpProcedure *
 create_procedure (GimpPlugIn *plug_in, const gchar *name)
 {
-  GimpProcedure *procedure = NULL;
+  GimpProcedure *procedure = ts_guided_procedure3 (plug_in, name);
 
+  if (procedure)
+    return procedure;
   if (g_str_equal (name, TS_PROC_RENDER))
     {
       procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
                                             run_render, NULL, NULL);
-      describe (procedure, _("Texture _Synthesis..."), "<Image>/Filters/Render/Pattern",
-                _("Synthesise a new texture of any size from the layer"),
-                _("Grows a new texture of the chosen size that looks like the active layer "
-                  "(or its selected part) everywhere, with the texsynth:synthesize GEGL "
-                  "operation, in a new image of the same precision and colour profile."));
+      ts_describe3 (procedure, _("Texture _Synthesis..."), "<Image>/Filters/Render/Pattern",
+                    _("Synthesise a new texture of any size from the layer"),
+                    _("Grows a new texture of the chosen size that looks like the active layer "
+                      "(or its selected part) everywhere, with the texsynth:synthesize GEGL "
+                      "operation, in a new image of the same precision and colour profile."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
       add_render_arguments (procedure, _("The image with the synthesised texture"));
     }
@@ -308,15 +283,15 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
     {
       procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
                                             ts_run_layers3, NULL, NULL);
-      describe (procedure, _("Texture Synthesis of _All Layers..."),
-                "<Image>/Filters/Render/Pattern",
-                _("Synthesise all layers (a material set) with one layout"),
-                _("Synthesises the selected layer with the texsynth:synthesize GEGL operation "
-                  "and lays every top-level layer of the image out the same way (its layout "
-                  "as a source map, applied with gegl:map-absolute), so that colour, normal, "
-                  "roughness and height maps stay aligned. All layers must have the same "
-                  "size; the new image has the same layers, names and order, precision and "
-                  "colour profile."));
+      ts_describe3 (procedure, _("Texture Synthesis of _All Layers..."),
+                    "<Image>/Filters/Render/Pattern",
+                    _("Synthesise all layers (a material set) with one layout"),
+                    _("Synthesises the selected layer with the texsynth:synthesize GEGL operation "
+                      "and lays every top-level layer of the image out the same way (its layout "
+                      "as a source map, applied with gegl:map-absolute), so that colour, normal, "
+                      "roughness and height maps stay aligned. All layers must have the same "
+                      "size; the new image has the same layers, names and order, precision and "
+                      "colour profile."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
       add_render_arguments (procedure, _("The image with the synthesised layers"));
     }
@@ -324,12 +299,12 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
     {
       procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
                                             run_tileable, NULL, NULL);
-      describe (procedure, _("Make Seamless by _Synthesis..."), "<Image>/Filters/Map",
-                _("Make the layer tile seamlessly by re-synthesising its edges"),
-                _("Runs the texsynth:tileable GEGL operation on the layer in place: only "
-                  "bands along the edges change. Undoable."));
+      ts_describe3 (procedure, _("Make Seamless by _Synthesis..."), "<Image>/Filters/Map",
+                    _("Make the layer tile seamlessly by re-synthesising its edges"),
+                    _("Runs the texsynth:tileable GEGL operation on the layer in place: only "
+                      "bands along the edges change. Undoable."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
-      add_quality_and_seed (procedure, "quality");
+      ts_add_quality_and_seed3 (procedure, "quality");
     }
   else if (g_str_equal (name, TS_PROC_SOLID))
     {
@@ -338,12 +313,12 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
 
       procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
                                             run_solid, NULL, NULL);
-      describe (procedure, _("S_olid Texture..."), "<Image>/Filters/Render/Pattern",
-                _("Synthesise a solid (volume) texture from one to three layers"),
-                _("Synthesises a size\302\263 volume whose slices look like the layer (up to "
-                  "three selected layers give the slices orthogonal to x, y and z), writes it "
-                  "to a file (.vol, .dds or PNG) and opens an image of its three middle "
-                  "slices."));
+      ts_describe3 (procedure, _("S_olid Texture..."), "<Image>/Filters/Render/Pattern",
+                    _("Synthesise a solid (volume) texture from one to three layers"),
+                    _("Synthesises a size\302\263 volume whose slices look like the layer (up to "
+                      "three selected layers give the slices orthogonal to x, y and z), writes it "
+                      "to a file (.vol, .dds or PNG) and opens an image of its three middle "
+                      "slices."));
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE |
                                                       GIMP_PROCEDURE_SENSITIVE_DRAWABLES);
       gimp_procedure_add_int_argument (procedure, "size", ts_arg_label ("size"),
@@ -355,7 +330,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
       gimp_procedure_add_file_argument (procedure, "path", ts_arg_label ("path"),
                                         ts_arg_tooltip ("path"), GIMP_FILE_CHOOSER_ACTION_SAVE,
                                         FALSE, file, G_PARAM_READWRITE);
-      add_quality_and_seed (procedure, "solid-quality");
+      ts_add_quality_and_seed3 (procedure, "solid-quality");
       /* After seed, as in GIMP 2.10: positional calls keep their meaning.
        * 0 off, 1 on, 2 automatic (the ops' default). */
       gimp_procedure_add_int_argument (procedure, "cell-structure",
@@ -376,22 +351,22 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
       procedure = gimp_image_procedure_new (plug_in, name, GIMP_PDB_PROC_TYPE_PLUGIN,
                                             ts_run_heal3, NULL, NULL);
       if (g_str_equal (name, TS_PROC_HEAL_SELECTION))
-        describe (procedure, _("_Heal Selection by Synthesis..."), "<Image>/Filters/Enhance",
-                  _("Fill the selection with texture continued from around it"),
-                  "Runs the texsynth:heal GEGL operation on the layer with the selection as "
-                  "the hole: pixels at least half selected are filled, the others stay "
-                  "exactly as they were. Undoable.");
+        ts_describe3 (procedure, _("_Heal Selection by Synthesis..."), "<Image>/Filters/Enhance",
+                      _("Fill the selection with texture continued from around it"),
+                      "Runs the texsynth:heal GEGL operation on the layer with the selection as "
+                      "the hole: pixels at least half selected are filled, the others stay "
+                      "exactly as they were. Undoable.");
       else if (g_str_equal (name, TS_PROC_HEAL_TRANSPARENCY))
-        describe (procedure, _("Heal _Transparency by Synthesis..."), "<Image>/Filters/Enhance",
-                  _("Fill the transparent parts of the layer with texture"),
-                  "Runs the texsynth:heal GEGL operation on the layer: its pixels that are "
-                  "not fully opaque are filled. Undoable.");
+        ts_describe3 (procedure, _("Heal _Transparency by Synthesis..."), "<Image>/Filters/Enhance",
+                      _("Fill the transparent parts of the layer with texture"),
+                      "Runs the texsynth:heal GEGL operation on the layer: its pixels that are "
+                      "not fully opaque are filled. Undoable.");
       else
-        describe (procedure, _("_Uncrop by Synthesis..."), "<Image>/Filters/Enhance",
-                  _("Enlarge the canvas and fill the new border with texture"),
-                  "Adds a border of the given percentage on each side of the image and fills "
-                  "that border only with texsynth:heal (transparent pixels the layer "
-                  "already had stay as they are). Undoable.");
+        ts_describe3 (procedure, _("_Uncrop by Synthesis..."), "<Image>/Filters/Enhance",
+                      _("Enlarge the canvas and fill the new border with texture"),
+                      "Adds a border of the given percentage on each side of the image and fills "
+                      "that border only with texsynth:heal (transparent pixels the layer "
+                      "already had stay as they are). Undoable.");
       gimp_procedure_set_image_types (procedure, "RGB*, GRAY*");
       gimp_procedure_set_sensitivity_mask (procedure, GIMP_PROCEDURE_SENSITIVE_DRAWABLE);
       if (g_str_equal (name, TS_PROC_UNCROP))
@@ -407,7 +382,7 @@ create_procedure (GimpPlugIn *plug_in, const gchar *name)
                                            ts_arg_tooltip ("sample-from"), 0,
                                            TS_PLUGIN_MAX_SAMPLE_FROM, 0, G_PARAM_READWRITE);
         }
-      add_quality_and_seed (procedure, "quality");
+      ts_add_quality_and_seed3 (procedure, "quality");
     }
   return procedure;
 }
@@ -424,7 +399,7 @@ query_procedures (GimpPlugIn *plug_in G_GNUC_UNUSED)
   names = g_list_append (names, g_strdup (TS_PROC_HEAL_SELECTION));
   names = g_list_append (names, g_strdup (TS_PROC_HEAL_TRANSPARENCY));
   names = g_list_append (names, g_strdup (TS_PROC_UNCROP));
-  return names;
+  return ts_guided_names3 (names);
 }
 
 static gboolean

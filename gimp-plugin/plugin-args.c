@@ -198,6 +198,21 @@ static const struct
   { "path", N_("File"),
     N_("Where to write the volume; the name's ending chooses the format: .vol "
        "(raw floats), .dds (volume texture) or .png (slices)") },
+  { "exemplar", N_("Exemplar"),
+    N_("The texture to paint with: one layer holding every texture the guides name, "
+       "e.g. grass beside gravel") },
+  { "exemplar-guide", N_("Exemplar's guide"),
+    N_("A layer of the exemplar's size that marks, pixel for pixel, which texture each "
+       "part of the exemplar is: flat colours for labels, or grey values") },
+  { "guide-weight", N_("Guide weight"),
+    N_("How closely the result follows the target guide against how coherent its "
+       "texture is: at 1 a pixel whose guide disagrees costs as much as two unrelated "
+       "pixels of the texture; 0 ignores the guides") },
+  { "style", N_("Style"),
+    N_("The layer whose texture repaints this one, e.g. a painting or a material") },
+  { "style-weight", N_("Keep the layer's shading"),
+    N_("How closely the result keeps this layer's light and shade against how coherent "
+       "the style's texture is; 0 ignores the layer and grows the style's texture") },
   { "cell-structure", N_("Cell structure"),
     N_("For layers of light cells in dark joints, such as stones in mortar, cobbles "
        "or cracked mud: a 3D tessellation fitted to the layer decides where the walls "

@@ -10,6 +10,7 @@
 #include <glib/gstdio.h>
 
 #include "texsynth-plugin.h"
+#include "plugin-graph.h"
 
 /* How often the main thread passes the op's progress on to GIMP. */
 #define PROGRESS_POLL_US 50000
@@ -167,11 +168,8 @@ process_job (gpointer data)
   return NULL;
 }
 
-/* Processes `sink` in a worker thread; the progress of each node of
- * `watched` (NULL-terminated) fills the bar from `start` to `end` in
- * equal parts, in turn. */
-static void
-run_with_progress (GeglNode *sink, GeglNode **watched, gdouble start, gdouble end)
+void
+ts_plugin_run_graph (GeglNode *sink, GeglNode **watched, gdouble start, gdouble end)
 {
   Job job = { sink, 0, 0 };
   gint n_watched = 0, last = -1;
@@ -210,17 +208,15 @@ run_with_progress (GeglNode *sink, GeglNode **watched, gdouble start, gdouble en
 
 /* --- graphs ----------------------------------------------------------- */
 
-static GeglNode *
-source_node (GeglNode *graph, GeglBuffer *buffer)
+GeglNode *
+ts_plugin_source_node (GeglNode *graph, GeglBuffer *buffer)
 {
   return gegl_node_new_child (graph, "operation", "gegl:buffer-source",
                               "buffer", buffer, NULL);
 }
 
-/* A buffer for the op's output, in the engine's own format so that no
- * precision is lost before GIMP converts it to the layer's. */
-static GeglBuffer *
-result_buffer (gint width, gint height)
+GeglBuffer *
+ts_plugin_result_buffer (gint width, gint height)
 {
   GeglRectangle rect = { 0, 0, width, height };
 
@@ -249,8 +245,8 @@ alpha_range (GeglBuffer *buffer, gfloat *lowest, gfloat *highest)
     }
 }
 
-static gboolean
-fully_transparent (GeglBuffer *buffer)
+gboolean
+ts_plugin_fully_transparent (GeglBuffer *buffer)
 {
   gfloat lowest, highest;
 
@@ -265,7 +261,7 @@ ts_plugin_render (const TsExemplar   *exemplar,
                   GError            **error)
 {
   GeglNode *graph = gegl_node_new ();
-  GeglNode *source = source_node (graph, exemplar->buffer);
+  GeglNode *source = ts_plugin_source_node (graph, exemplar->buffer);
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_SYNTHESIZE,
                                       "width", args->width, "height", args->height,
                                       "tileable", args->tileable, "quality", args->quality,
@@ -273,15 +269,15 @@ ts_plugin_render (const TsExemplar   *exemplar,
   GeglNode *watched[] = { op, NULL };
   GeglNode *sink;
 
-  *result = result_buffer (args->width, args->height);
+  *result = ts_plugin_result_buffer (args->width, args->height);
   sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
   gegl_node_link_many (source, op, sink, NULL);
-  run_with_progress (sink, watched, 0.0, 1.0);
+  ts_plugin_run_graph (sink, watched, 0.0, 1.0);
   g_object_unref (graph);
 
   /* The op's only failure result is a transparent image (with a warning
    * on the console), e.g. for a fully transparent or too small exemplar. */
-  if (fully_transparent (*result))
+  if (ts_plugin_fully_transparent (*result))
     {
       g_clear_object (result);
       g_set_error (error, TS_PLUGIN_ERROR, 0,
@@ -301,7 +297,7 @@ ts_plugin_tileable (const TsExemplar     *exemplar,
 {
   const GeglRectangle *extent = gegl_buffer_get_extent (exemplar->buffer);
   GeglNode *graph = gegl_node_new ();
-  GeglNode *source = source_node (graph, exemplar->buffer);
+  GeglNode *source = ts_plugin_source_node (graph, exemplar->buffer);
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_TILEABLE,
                                       "quality", args->quality, "seed", args->seed, NULL);
   GeglNode *watched[] = { op, NULL };
@@ -309,10 +305,10 @@ ts_plugin_tileable (const TsExemplar     *exemplar,
 
   /* The op's failure leaves the picture as it was, which is what the
    * user gets then too: there is nothing else to report. */
-  *result = result_buffer (extent->width, extent->height);
+  *result = ts_plugin_result_buffer (extent->width, extent->height);
   sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
   gegl_node_link_many (source, op, sink, NULL);
-  run_with_progress (sink, watched, 0.0, 1.0);
+  ts_plugin_run_graph (sink, watched, 0.0, 1.0);
   g_object_unref (graph);
   return TRUE;
 }
@@ -387,8 +383,8 @@ ts_plugin_render_layers (TsMaterialSet      *set,
 
   for (gint i = 0; i < n_layers; i++)
     g_clear_object (&results[i]);
-  gegl_node_link_many (source_node (graph, layers[set->driver].buffer), op, sink, NULL);
-  run_with_progress (sink, watched, 0.0, 0.9);
+  gegl_node_link_many (ts_plugin_source_node (graph, layers[set->driver].buffer), op, sink, NULL);
+  ts_plugin_run_graph (sink, watched, 0.0, 0.9);
   if (layout_is_empty (layout))
     {
       g_object_unref (graph);
@@ -403,7 +399,7 @@ ts_plugin_render_layers (TsMaterialSet      *set,
   /* Nearest sampling at pixel centres copies whole pixels: every layer
    * gets exactly the driving layer's layout. map-absolute's extent is its
    * input's, so the crop gives the layout's size. */
-  layout_source = source_node (graph, layout);
+  layout_source = ts_plugin_source_node (graph, layout);
   for (gint i = 0; i < n_layers; i++)
     {
       GeglNode *map = gegl_node_new_child (graph, "operation", "gegl:map-absolute",
@@ -415,10 +411,10 @@ ts_plugin_render_layers (TsMaterialSet      *set,
       results[i] = gegl_buffer_new (&rect, gegl_buffer_get_format (layers[i].buffer));
       sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
                                   "buffer", results[i], NULL);
-      gegl_node_link_many (source_node (graph, layers[i].buffer), map, crop, sink, NULL);
+      gegl_node_link_many (ts_plugin_source_node (graph, layers[i].buffer), map, crop, sink, NULL);
       ts_plugin_connect_pads (layout_source, map, "aux");
       watched[0] = map;
-      run_with_progress (sink, watched, 0.9 + 0.1 * i / n_layers, 0.9 + 0.1 * (i + 1) / n_layers);
+      ts_plugin_run_graph (sink, watched, 0.9 + 0.1 * i / n_layers, 0.9 + 0.1 * (i + 1) / n_layers);
     }
   g_object_unref (graph);
   g_object_unref (layout);
@@ -449,7 +445,7 @@ ts_plugin_heal (GeglBuffer        *pixels,
                 GError           **error)
 {
   GeglNode *graph = gegl_node_new ();
-  GeglNode *source = source_node (graph, pixels);
+  GeglNode *source = ts_plugin_source_node (graph, pixels);
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_HEAL,
                                       "context", args->context, "sample-from", args->sample_from,
                                       "quality", args->quality, "seed", args->seed, NULL);
@@ -461,8 +457,8 @@ ts_plugin_heal (GeglBuffer        *pixels,
   sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
   gegl_node_link_many (source, op, sink, NULL);
   if (mask)
-    ts_plugin_connect_pads (source_node (graph, mask), op, "aux");
-  run_with_progress (sink, watched, 0.0, 1.0);
+    ts_plugin_connect_pads (ts_plugin_source_node (graph, mask), op, "aux");
+  ts_plugin_run_graph (sink, watched, 0.0, 1.0);
   g_object_unref (graph);
 
   if (same_pixels (pixels, *result))
@@ -495,7 +491,7 @@ link_exemplars (GeglNode *graph, GeglNode *op, const TsExemplar *exemplars, gint
   static const gchar *const pads[] = { "input", "aux", "aux2" };
 
   for (gint i = 0; i < n && i < 3; i++)
-    ts_plugin_connect_pads (source_node (graph, exemplars[i].buffer), op, pads[i]);
+    ts_plugin_connect_pads (ts_plugin_source_node (graph, exemplars[i].buffer), op, pads[i]);
 }
 
 void
@@ -552,7 +548,7 @@ ts_plugin_solid (const TsExemplar  *exemplars,
                               NULL);
   link_exemplars (graph, save, exemplars, n_exemplars);
   watched[0] = save;
-  run_with_progress (save, watched, 0.0, 0.9);
+  ts_plugin_run_graph (save, watched, 0.0, 0.9);
 
   /* A sink cannot return an error: the op warns on the console and the
    * file is not (re)written. */
@@ -579,12 +575,12 @@ ts_plugin_solid (const TsExemplar  *exemplars,
 
       ts_plugin_set_enum_by_nick (slice, "axis", axes[axis]);
       link_exemplars (graph, slice, exemplars, n_exemplars);
-      slices[axis] = result_buffer (args->size, args->size);
+      slices[axis] = ts_plugin_result_buffer (args->size, args->size);
       sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
                                   "buffer", slices[axis], NULL);
       gegl_node_link (slice, sink);
       watched[0] = slice;
-      run_with_progress (sink, watched, 0.9 + 0.1 * axis / 3.0, 0.9 + 0.1 * (axis + 1) / 3.0);
+      ts_plugin_run_graph (sink, watched, 0.9 + 0.1 * axis / 3.0, 0.9 + 0.1 * (axis + 1) / 3.0);
     }
   g_object_unref (graph);
   return TRUE;

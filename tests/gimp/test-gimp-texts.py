@@ -31,9 +31,12 @@ PROCEDURES = {
     "plug-in-texsynth-heal-selection": ["context", "sample-from", "quality", "seed"],
     "plug-in-texsynth-heal-transparency": ["context", "sample-from", "quality", "seed"],
     "plug-in-texsynth-uncrop": ["percent", "quality", "seed"],
+    "plug-in-texsynth-texture-by-numbers": ["exemplar", "exemplar-guide", "guide-weight",
+                                            "tileable", "quality", "seed"],
+    "plug-in-texsynth-style-transfer": ["style", "guide-weight", "quality", "seed"],
 }
 # GIMP 2.10's database has no ranges: the number arguments that may be 0.
-MAY_BE_ZERO = {"seed", "context", "sample-from", "cell-structure"}
+MAY_BE_ZERO = {"seed", "context", "sample-from", "cell-structure", "guide-weight"}
 
 work = tsops.workdir()
 gimp = gimpbatch.Gimp(args.gimp, args.plugin, work)
@@ -117,7 +120,7 @@ for procedure, names in PROCEDURES.items():
         if gimp.version >= 3:
             tsops.check(nick and nick != name, "%s %s: a label for the dialog (%r)"
                         % (procedure, name, nick))
-            zero_allowed = kind == "gint" and low == "0"
+            zero_allowed = kind in ("gint", "gdouble") and re.fullmatch(r"0(\.0*)?", low)
         else:
             zero_allowed = name in MAY_BE_ZERO
         if zero_allowed:
