@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "level.h"
 #include "occurrence.h"
+#include "quilt-start.h"
 #include "seam-placement.h"
 #include "progress.h"
 #include "rng.h"
@@ -128,9 +129,11 @@ random_blocks (TsLevelState *state, const TsParams *params, size_t level, size_t
       }
 }
 
-/* Starting sources of a level: random exemplar blocks at the coarsest
- * level, else the children of the coarser level's sources. */
-static void
+/* Starting sources of a level: at the coarsest level the guide's blocks
+ * under a guide, else a quilt of large exemplar patches (random exemplar
+ * blocks where the initial map replaces it anyway); at the others the
+ * children of the coarser level's sources. */
+static TsStatus
 start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t block,
                const int32_t *coarser, size_t coarser_w, size_t coarser_ex_w)
 {
@@ -139,6 +142,12 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
   if (!coarser && state->guide)
     ts_guide_start_blocks (state->guide, ex, state->source, state->width, state->height,
                            params->seed, level, block);
+  else if (!coarser && !state->preserve_source)
+    {
+      TsStatus status = ts_quilt_start (state, params->seed, (uint32_t) level);
+      if (status != TS_OK)
+        return status;
+    }
   else if (!coarser)
     random_blocks (state, params, level, block);
   else
@@ -163,6 +172,7 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
   for (size_t p = 0; state->preserve && p < state->width * state->height; p++)
     if (state->preserve[p] >= 1.0f)
       state->source[p] = state->preserve_source[p];
+  return TS_OK;
 }
 
 /* Under a guide the histogram to match is the exemplar's parts in the
@@ -430,8 +440,10 @@ synthesize_level (Run *run, Work *w, size_t level)
       state->preserve_source = w->initial_source;
       state->preserve = w->initial_preserve;
     }
-  start_sources (state, params, level, plan.pass[0].patch, w->coarser_source, w->coarser_width,
-                 w->coarser_ex_width);
+  status = start_sources (state, params, level, plan.pass[0].patch, w->coarser_source,
+                          w->coarser_width, w->coarser_ex_width);
+  if (status != TS_OK)
+    return status;
 
   /* Tile edges are placed by rolling the result, which would move it
    * off a guide's layout. */
