@@ -118,6 +118,7 @@ typedef struct
   float  *cost;      /* patch x overlap, a cut's error map      */
   size_t *path;      /* patch entries                           */
   bool   *keep;      /* patch x patch: the laid pixel stays     */
+  uint32_t *usage;   /* per candidate corner: patches laid near it */
 } Scratch;
 
 /* Marks the pixels of the new patch that stay as laid: those before the
@@ -159,7 +160,8 @@ cut_overlaps (const TsLevelState *state, const Layout *g, Scratch *s, size_t ox,
 
 /* Chooses the exemplar corner of patch (i, j): any at the first patch,
  * else a seeded pick among those whose overlap error is within the
- * tolerance of the best one, leaving out corners that merely continue
+ * tolerance of the best one and, of those, the least used (so the quilt
+ * draws on the whole exemplar), leaving out corners that merely continue
  * the left or upper neighbour unless nothing else is left. */
 static size_t
 choose_corner (const TsLevelState *state, const Layout *g, Scratch *s, const int32_t *corner,
@@ -197,11 +199,15 @@ choose_corner (const TsLevelState *state, const Layout *g, Scratch *s, const int
       if (best == FLT_MAX)
         continue;
       float limit = best * (1.0f + (float) TS_QUILT_TOLERANCE);
+      uint32_t least = UINT32_MAX;
       for (size_t c = 0; c < ncand; c++)
-        eligible += s->error[c] <= limit;
+        if (s->error[c] <= limit && s->usage[c] < least)
+          least = s->usage[c];
+      for (size_t c = 0; c < ncand; c++)
+        eligible += s->error[c] <= limit && s->usage[c] == least;
       size_t pick = (size_t) ts_random_below (r, eligible);
       for (size_t c = 0; c < ncand; c++)
-        if (s->error[c] <= limit && pick-- == 0)
+        if (s->error[c] <= limit && s->usage[c] == least && pick-- == 0)
           return c;
     }
   return (size_t) ts_random_below (r, ncand);
@@ -232,7 +238,8 @@ ts_quilt_start (TsLevelState *state, uint32_t seed, uint32_t level)
   s.cost = malloc (g.patch * g.patch * sizeof (float));
   s.path = malloc (g.patch * sizeof (size_t));
   s.keep = malloc (g.patch * g.patch * sizeof (bool));
-  if (!corner || !s.error || !s.cost || !s.path || !s.keep)
+  s.usage = calloc (g.cand_w * g.cand_h, sizeof (uint32_t));
+  if (!corner || !s.error || !s.cost || !s.path || !s.keep || !s.usage)
     status = TS_ERROR_OUT_OF_MEMORY;
 
   for (size_t i = 0; i < g.rows && status == TS_OK; i++)
@@ -251,6 +258,9 @@ ts_quilt_start (TsLevelState *state, uint32_t seed, uint32_t level)
           size_t pw = state->width - ox < g.patch ? state->width - ox : g.patch;
           size_t ph = state->height - oy < g.patch ? state->height - oy : g.patch;
 
+          for (size_t uy = cy > g.overlap ? cy - g.overlap : 0; uy <= cy + g.overlap && uy < g.cand_h; uy++)
+            for (size_t ux = cx > g.overlap ? cx - g.overlap : 0; ux <= cx + g.overlap && ux < g.cand_w; ux++)
+              s.usage[uy * g.cand_w + ux]++;
           corner[2 * (i * g.cols + j)] = (int32_t) cx;
           corner[2 * (i * g.cols + j) + 1] = (int32_t) cy;
           cut_overlaps (state, &g, &s, ox, oy, pw, ph, j > 0, i > 0, cx, cy);
@@ -272,5 +282,6 @@ ts_quilt_start (TsLevelState *state, uint32_t seed, uint32_t level)
   free (s.cost);
   free (s.path);
   free (s.keep);
+  free (s.usage);
   return status;
 }
