@@ -201,6 +201,60 @@ LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
         check_message (ts_heal_params_validate (&hp, &ex, hole, NULL, &error), &error);
       free (hole);
     }
+  /* The same exemplar guided: guides of raw float bits (NaN and
+   * infinities included) or flat labels, each way of comparing, any
+   * weight; without an exemplar guide, style transfer. */
+  if (ex.pixels && b.size > 0)
+    {
+      uint8_t g_flags = take_u8 (&b);
+      size_t n_ex = ex.width * ex.height, n_out;
+      TsGuides guides;
+      ts_guides_init (&guides);
+      /* Sizes the run can afford: the checks of huge sizes are above. */
+      p.output_width = 1 + (size_t) (take_u8 (&b) % MAX_RUN_OUTPUT_SIDE);
+      p.output_height = 1 + (size_t) (take_u8 (&b) % MAX_RUN_OUTPUT_SIDE);
+      p.initial_source = NULL;
+      p.preserve = NULL;
+      n_out = p.output_width * p.output_height;
+      guides.compare = (TsGuideCompare) (g_flags % 4);
+      guides.channels = 1 + (size_t) (g_flags >> 2 & 3);
+      guides.weight = (double) take_u8 (&b) / 16.0 - 1.0;
+      float *ex_guide = malloc (n_ex * guides.channels * sizeof (float));
+      float *target_guide = malloc (n_out * guides.channels * sizeof (float));
+      if (ex_guide && target_guide)
+        {
+          for (size_t i = 0; i < n_ex * guides.channels; i++)
+            ex_guide[i] = g_flags & 16 ? (float) (i / guides.channels % 3) : ex.pixels[i % (n_ex * TS_CHANNELS)];
+          for (size_t i = 0; i < n_out * guides.channels; i++)
+            {
+              /* Raw float bits where the input has them, else labels 0 and 1. */
+              uint32_t bits = b.size >= 4 ? take_u32 (&b) : 0;
+              float v = (float) ((i * 2654435761u) >> 31 & 1u);
+              if (bits)
+                memcpy (&v, &bits, sizeof v);
+              target_guide[i] = v;
+            }
+          guides.exemplar_guide = g_flags & 32 ? NULL : ex_guide;
+          guides.target_guide = target_guide;
+          p.guides = &guides;
+          p.source_map = NULL;
+          status = ts_params_validate (&p, &ex, &error);
+          check_message (status, &error);
+          out.width = p.output_width;
+          out.height = p.output_height;
+          out.pixels = status == TS_OK ? malloc (n_out * TS_CHANNELS * sizeof (float)) : NULL;
+          if (out.pixels)
+            {
+              status = ts_synthesize (&p, &ex, &out, NULL, NULL, &error);
+              check_message (status, &error);
+              if (status == TS_OK)
+                check_finite (&out);
+            }
+          free (out.pixels);
+        }
+      free (ex_guide);
+      free (target_guide);
+    }
   free (ex.pixels);
   return 0;
 }
