@@ -14,7 +14,7 @@ import subprocess
 import sys
 import tempfile
 
-from panels import ROOT, Gegl, node, save_row
+from panels import ROOT, node, save_on_white, save_row
 
 EXEMPLARS = ("brick", "3dweave", "burlap")
 CROP = 128
@@ -83,14 +83,6 @@ for row in rows:
         canvas = over
     y += box.height + GAP
     width = max(width, box.width)
-white = node("gegl:color", value=Gegl.Color.new("white"))
-backdrop = node("gegl:crop", width=float(width), height=float(y - GAP))
-white.connect_to("output", backdrop, "input")
-flat = node("gegl:over")
-backdrop.connect_to("output", flat, "input")
-canvas.connect_to("output", flat, "aux")
-save = node("gegl:png-save", path=OUT, bitdepth=8)
-flat.connect_to("output", save, "input")
-save.process()
+save_on_white(canvas, width, y - GAP, OUT)
 shutil.rmtree(tmp)
 print(OUT)

@@ -51,8 +51,13 @@ def save_row(panels, ratios, path, gap=8):
             placed.connect_to("output", over, "aux")
             canvas = over
         x += width + gap
+    save_on_white(canvas, x - gap, top, path)
+
+
+def save_on_white(canvas, width, height, path):
+    """`canvas` over a white width x height backdrop, saved as 8-bit PNG."""
     white = node("gegl:color", value=Gegl.Color.new("white"))
-    backdrop = node("gegl:crop", width=float(x - gap), height=float(top))
+    backdrop = node("gegl:crop", width=float(width), height=float(height))
     white.connect_to("output", backdrop, "input")
     flat = node("gegl:over")
     backdrop.connect_to("output", flat, "input")

@@ -44,4 +44,10 @@ gint32 new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gchar *
 gboolean finish_with_image (Outcome *outcome, GimpRunMode mode, const gchar *procedure,
                             gconstpointer args, guint32 size);
 
+/* Writes `result` (the layer's size) over the layer's pixels, as one
+ * undo step; an indexed image is converted to RGB first, with a message.
+ * FALSE if out of memory. Only a finished run may call it: a cancelled
+ * one leaves the image as it was. */
+gboolean ts_replace_layer_pixels2 (gint32 drawable, GeglBuffer *result);
+
 #endif /* TEXSYNTH_COMPAT_GIMP2_H */

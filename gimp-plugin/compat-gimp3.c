@@ -181,3 +181,29 @@ ts_describe3 (GimpProcedure *procedure, const gchar *label, const gchar *menu,
   gimp_procedure_set_documentation (procedure, blurb, help, gimp_procedure_get_name (procedure));
   gimp_procedure_set_attribution (procedure, AUTHOR, COPYRIGHT, DATE);
 }
+
+gboolean
+ts_replace_layer_pixels3 (GimpDrawable *drawable, GeglBuffer *result)
+{
+  GimpImage *image = gimp_item_get_image (GIMP_ITEM (drawable));
+  const GeglRectangle *extent = gegl_buffer_get_extent (result);
+  GeglBuffer *shadow;
+  gboolean written;
+
+  gimp_image_undo_group_start (image);
+  if (gimp_drawable_is_indexed (drawable))
+    {
+      g_message (_("The image is indexed: it is converted to RGB first."));
+      gimp_image_convert_rgb (image);
+    }
+  shadow = gimp_drawable_get_shadow_buffer (drawable);
+  written = ts_plugin_transfer (result, extent, shadow, 0, 0, gimp_drawable_get_format (drawable));
+  g_object_unref (shadow);
+  if (written)
+    {
+      gimp_drawable_merge_shadow (drawable, TRUE);
+      gimp_drawable_update (drawable, 0, 0, extent->width, extent->height);
+    }
+  gimp_image_undo_group_end (image);
+  return written;
+}

@@ -36,6 +36,12 @@ GimpImage *new_image (const TsExemplar *exemplar, GeglBuffer **layers, const gch
 GimpValueArray *success_with_image (GimpProcedure *procedure, GimpRunMode mode,
                                     GimpImage *image);
 
+/* Writes `result` (the layer's size) over the layer's pixels, as one
+ * undo step; an indexed image is converted to RGB first, with a message.
+ * FALSE if out of memory. Only a finished run may call it: a cancelled
+ * one leaves the image as it was. */
+gboolean ts_replace_layer_pixels3 (GimpDrawable *drawable, GeglBuffer *result);
+
 /* A procedure's menu label and path, documentation and attribution; its
  * image types are those of every texsynth procedure. */
 void ts_describe3 (GimpProcedure *procedure, const gchar *label, const gchar *menu,

@@ -162,33 +162,6 @@ add_result_layer (gint32 target, GeglBuffer *result, gboolean alpha)
   return written ? layer : -1;
 }
 
-/* The layer restyled in place, as one undo step; FALSE if out of memory. */
-static gboolean
-restyle_layer (gint32 drawable, GeglBuffer *result)
-{
-  gint32 image = gimp_item_get_image (drawable);
-  const GeglRectangle *extent = gegl_buffer_get_extent (result);
-  GeglBuffer *shadow;
-  gboolean written;
-
-  gimp_image_undo_group_start (image);
-  if (gimp_drawable_is_indexed (drawable))
-    {
-      g_message (_("The image is indexed: it is converted to RGB first."));
-      gimp_image_convert_rgb (image);
-    }
-  shadow = gimp_drawable_get_shadow_buffer (drawable);
-  written = ts_plugin_transfer (result, extent, shadow, 0, 0, gimp_drawable_get_format (drawable));
-  g_object_unref (shadow);
-  if (written)
-    {
-      gimp_drawable_merge_shadow (drawable, TRUE);
-      gimp_drawable_update (drawable, 0, 0, extent->width, extent->height);
-    }
-  gimp_image_undo_group_end (image);
-  return written;
-}
-
 gboolean
 ts_run_guided2 (const gchar *name, GimpRunMode mode, const GimpParam *params, gint n_params,
                 Outcome *outcome)
@@ -252,7 +225,7 @@ ts_run_guided2 (const gchar *name, GimpRunMode mode, const GimpParam *params, gi
       ok = outcome->new_layer >= 0;
     }
   else
-    ok = restyle_layer (target, result);
+    ok = ts_replace_layer_pixels2 (target, result);
   g_object_unref (result);
   ts_exemplar_clear (&exemplar);
   if (!ok)

@@ -52,33 +52,6 @@ add_result_layer (GimpDrawable *target, GeglBuffer *result, gboolean alpha)
   return written ? layer : NULL;
 }
 
-/* The layer restyled in place, as one undo step; FALSE if out of memory. */
-static gboolean
-restyle_layer (GimpDrawable *drawable, GeglBuffer *result)
-{
-  GimpImage *image = gimp_item_get_image (GIMP_ITEM (drawable));
-  const GeglRectangle *extent = gegl_buffer_get_extent (result);
-  GeglBuffer *shadow;
-  gboolean written;
-
-  gimp_image_undo_group_start (image);
-  if (gimp_drawable_is_indexed (drawable))
-    {
-      g_message (_("The image is indexed: it is converted to RGB first."));
-      gimp_image_convert_rgb (image);
-    }
-  shadow = gimp_drawable_get_shadow_buffer (drawable);
-  written = ts_plugin_transfer (result, extent, shadow, 0, 0, gimp_drawable_get_format (drawable));
-  g_object_unref (shadow);
-  if (written)
-    {
-      gimp_drawable_merge_shadow (drawable, TRUE);
-      gimp_drawable_update (drawable, 0, 0, extent->width, extent->height);
-    }
-  gimp_image_undo_group_end (image);
-  return written;
-}
-
 static GimpValueArray *
 run_guided (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_UNUSED,
             GimpDrawable **drawables, GimpProcedureConfig *config, gpointer data G_GNUC_UNUSED)
@@ -169,7 +142,7 @@ run_guided (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
   if (by_numbers)
     ok = (layer = add_result_layer (target, result, exemplar.has_alpha)) != NULL;
   else
-    ok = restyle_layer (target, result);
+    ok = ts_replace_layer_pixels3 (target, result);
   g_object_unref (result);
   ts_exemplar_clear (&exemplar);
   if (!ok)

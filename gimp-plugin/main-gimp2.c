@@ -247,12 +247,12 @@ static gboolean
 run_tileable (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome *outcome)
 {
   gint32 drawable = params[2].data.d_drawable;
-  gint32 image = gimp_item_get_image (drawable);
   TsExemplar exemplar;
   TsTileableArgs args;
-  GeglBuffer *result = NULL, *shadow;
+  GeglBuffer *result = NULL;
   GError *error = NULL;
   gchar *message = NULL;
+  gboolean written;
 
   ts_tileable_args_init (&args);
   if (mode == GIMP_RUN_NONINTERACTIVE)
@@ -288,29 +288,11 @@ run_tileable (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome 
     }
 
   /* Only now is the image changed: a cancelled run leaves it as it was. */
-  gimp_image_undo_group_start (image);
-  if (gimp_drawable_is_indexed (drawable))
-    {
-      g_message (_("The image is indexed: it is converted to RGB first."));
-      gimp_image_convert_rgb (image);
-    }
-  shadow = gimp_drawable_get_shadow_buffer (drawable);
-  if (!ts_plugin_transfer (result, gegl_buffer_get_extent (result), shadow, 0, 0,
-                           gimp_drawable_get_format (drawable)))
-    {
-      g_object_unref (shadow);
-      gimp_image_undo_group_end (image);
-      g_object_unref (result);
-      ts_exemplar_clear (&exemplar);
-      return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Out of memory.")));
-    }
-  g_object_unref (shadow);
-  gimp_drawable_merge_shadow (drawable, TRUE);
-  gimp_drawable_update (drawable, 0, 0, gimp_drawable_width (drawable),
-                        gimp_drawable_height (drawable));
-  gimp_image_undo_group_end (image);
+  written = ts_replace_layer_pixels2 (drawable, result);
   g_object_unref (result);
   ts_exemplar_clear (&exemplar);
+  if (!written)
+    return fail (outcome, GIMP_PDB_EXECUTION_ERROR, g_strdup (_("Out of memory.")));
 
   if (mode != GIMP_RUN_NONINTERACTIVE)
     {

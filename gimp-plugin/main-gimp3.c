@@ -95,13 +95,13 @@ run_render (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
 }
 
 static GimpValueArray *
-run_tileable (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
+run_tileable (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_UNUSED,
               GimpDrawable **drawables, GimpProcedureConfig *config, gpointer data G_GNUC_UNUSED)
 {
   TsExemplar exemplar;
   TsTileableArgs args;
   GimpDrawable *drawable;
-  GeglBuffer *result = NULL, *shadow;
+  GeglBuffer *result = NULL;
   GError *error = NULL;
   gchar *message;
   gboolean ok;
@@ -134,23 +134,7 @@ run_tileable (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
     }
 
   /* Only now is the image changed: a cancelled run leaves it as it was. */
-  gimp_image_undo_group_start (image);
-  if (gimp_drawable_is_indexed (drawable))
-    {
-      g_message (_("The image is indexed: it is converted to RGB first."));
-      gimp_image_convert_rgb (image);
-    }
-  shadow = gimp_drawable_get_shadow_buffer (drawable);
-  ok = ts_plugin_transfer (result, gegl_buffer_get_extent (result), shadow, 0, 0,
-                           gimp_drawable_get_format (drawable));
-  g_object_unref (shadow);
-  if (ok)
-    {
-      gimp_drawable_merge_shadow (drawable, TRUE);
-      gimp_drawable_update (drawable, 0, 0, gimp_drawable_get_width (drawable),
-                            gimp_drawable_get_height (drawable));
-    }
-  gimp_image_undo_group_end (image);
+  ok = ts_replace_layer_pixels3 (drawable, result);
   g_object_unref (result);
   ts_exemplar_clear (&exemplar);
   if (!ok)
