@@ -84,10 +84,12 @@ on_destroy (GtkWidget *box G_GNUC_UNUSED, PreviewWidget *preview)
 }
 
 GtkWidget *
-ts_preview_widget_new (TsPreviewStart start, gpointer data)
+ts_preview_widget_new (TsPreviewStart start, gpointer data, const gchar *caption)
 {
   PreviewWidget *preview = g_new0 (PreviewWidget, 1);
   GtkWidget *frame = gtk_frame_new (NULL);
+  GtkWidget *label = gtk_label_new (NULL);
+  gchar *markup = g_markup_printf_escaped ("<small>%s</small>", caption);
 #if GTK_MAJOR_VERSION >= 3
   GtkWidget *box = gtk_box_new (GTK_ORIENTATION_VERTICAL, 6);
 #else
@@ -112,8 +114,15 @@ ts_preview_widget_new (TsPreviewStart start, gpointer data)
   }
 #endif
   gimp_help_set_help_data (preview->area,
-                           _("A small run with these settings: the texture's look at the "
-                             "result's scale, not the result itself"), NULL);
+                           _("A small, quick run with these settings: how the result will "
+                             "look, not the result itself"), NULL);
+  /* Says what the preview shows, and how it differs from the result. */
+  gtk_label_set_markup (GTK_LABEL (label), markup);
+  g_free (markup);
+  gtk_label_set_justify (GTK_LABEL (label), GTK_JUSTIFY_CENTER);
+  gtk_label_set_line_wrap (GTK_LABEL (label), TRUE);
+  gtk_label_set_width_chars (GTK_LABEL (label), 30);
+  gtk_box_pack_start (GTK_BOX (box), label, FALSE, FALSE, 0);
 
   preview->button = gtk_button_new_with_mnemonic (_("_Preview"));
   gimp_help_set_help_data (preview->button, _("Run the preview again with the settings as "

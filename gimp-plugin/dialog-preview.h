@@ -14,9 +14,9 @@
  * cannot. */
 typedef TsPreview *(*TsPreviewStart) (gpointer data);
 
-/* The preview and its button. The first run starts when the dialog is
- * shown; `start` and `data` must outlive the widget, whose destruction
- * waits for a run still going. */
-GtkWidget *ts_preview_widget_new (TsPreviewStart start, gpointer data);
+/* The preview, `caption` under it (what it shows), and its button. The
+ * first run starts when the dialog is shown; `start` and `data` must
+ * outlive the widget, whose destruction waits for a run still going. */
+GtkWidget *ts_preview_widget_new (TsPreviewStart start, gpointer data, const gchar *caption);
 
 #endif /* TEXSYNTH_DIALOG_PREVIEW_H */

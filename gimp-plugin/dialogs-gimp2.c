@@ -6,8 +6,11 @@
  * since; they are what GIMP 2.10 needs, so their warnings are noise. */
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 
+#include <string.h>
+
 #include "dialogs-gimp2.h"
 #include "dialog-preview.h"
+#include "compat-gimp2.h"
 
 #include <libgimp/gimpui.h>
 #include <glib/gi18n-lib.h>
@@ -20,16 +23,16 @@ typedef struct
   gint       rows;
 } Form;
 
-/* What a preview runs: the exemplar and the dialog's live settings (the
- * seed is kept apart by GimpRandomSeed). */
+/* What a preview runs: what was read of GIMP and the dialog's live
+ * settings: `args`, of the type of input->kind's procedure, the seed
+ * (kept apart by GimpRandomSeed) and the guided procedures' layers (kept
+ * by their combo boxes). */
 typedef struct
 {
-  const TsExemplar *exemplar;
-  const TsRenderArgs *render;
-  const TsSolidArgs *solid;
-  const TsHealArgs *heal;      /* with heal_pixels and heal_mask */
-  GeglBuffer *heal_pixels, *heal_mask;
-  const guint32 *seed;
+  const TsPreviewInput *input;
+  gconstpointer         args;
+  const guint32        *seed;
+  const gint32         *exemplar_layer, *guide_layer;
 } PreviewSource;
 
 static void
@@ -148,39 +151,75 @@ form_seed (Form *form, guint32 *seed, gboolean *randomize)
   g_free (label);
 }
 
+/* A private copy of the layer `id` for the preview; NULL if there is
+ * none (or no memory). */
+static GeglBuffer *
+read_layer (const gint32 *id)
+{
+  TsExemplar exemplar;
+  GeglBuffer *buffer;
+  gchar *message = NULL;
+
+  if (!id || *id < 0 || !gimp_item_is_valid (*id) || !read_exemplar (*id, FALSE, &exemplar, &message))
+    {
+      g_free (message);
+      return NULL;
+    }
+  buffer = g_object_ref (exemplar.buffer);
+  ts_exemplar_clear (&exemplar);
+  return buffer;
+}
+
 static TsPreview *
 start_preview (gpointer data)
 {
   const PreviewSource *source = data;
+  gint seed = (gint) (*source->seed & G_MAXINT);
+  TsPreviewSettings settings;
+  TsPreview *preview;
 
-  if (source->render)
+  memset (&settings, 0, sizeof settings);
+  switch (source->input->kind)
     {
-      TsRenderArgs args = *source->render;
-
-      args.seed = (gint) (*source->seed & G_MAXINT);
-      return ts_preview_start_render (source->exemplar, &args);
+    case TS_PREVIEW_RENDER:
+    case TS_PREVIEW_LAYERS:
+      settings.render = *(const TsRenderArgs *) source->args;
+      settings.render.seed = seed;
+      break;
+    case TS_PREVIEW_SOLID:
+      settings.solid = *(const TsSolidArgs *) source->args;
+      settings.solid.seed = seed;
+      break;
+    case TS_PREVIEW_HEAL_SELECTION:
+    case TS_PREVIEW_HEAL_TRANSPARENCY:
+    case TS_PREVIEW_UNCROP:
+      settings.heal = *(const TsHealArgs *) source->args;
+      settings.heal.seed = seed;
+      break;
+    case TS_PREVIEW_TILEABLE:
+      settings.tileable = *(const TsTileableArgs *) source->args;
+      settings.tileable.seed = seed;
+      break;
+    case TS_PREVIEW_GUIDED:
+      settings.guided = *(const TsGuidedArgs *) source->args;
+      settings.guided.seed = seed;
+      /* The layers the dialog picks now: read anew for each run. */
+      settings.exemplar = read_layer (source->exemplar_layer);
+      settings.exemplar_guide = read_layer (source->guide_layer);
+      break;
     }
-  else if (source->heal)
-    {
-      TsHealArgs args = *source->heal;
-
-      args.seed = (gint) (*source->seed & G_MAXINT);
-      return ts_preview_start_heal (source->heal_pixels, source->heal_mask, &args);
-    }
-  else
-    {
-      TsSolidArgs args = *source->solid;
-
-      args.seed = (gint) (*source->seed & G_MAXINT);
-      return ts_preview_start_solid (source->exemplar, 1, &args);
-    }
+  preview = ts_preview_start (source->input, &settings);
+  g_clear_object (&settings.exemplar);
+  g_clear_object (&settings.exemplar_guide);
+  return preview;
 }
 
 /* GIMP's filter dialogs show their preview first. */
 static void
 form_preview (Form *form, PreviewSource *source)
 {
-  GtkWidget *preview = ts_preview_widget_new (start_preview, source);
+  GtkWidget *preview = ts_preview_widget_new (start_preview, source,
+                                              ts_preview_caption (source->input->kind));
 
   gtk_box_pack_start (GTK_BOX (form->vbox), preview, FALSE, FALSE, 0);
   gtk_box_reorder_child (GTK_BOX (form->vbox), preview, 0);
@@ -197,19 +236,19 @@ form_run (Form *form)
   return ok;
 }
 
-/* `exemplar`: what the preview grows, or NULL for no preview. */
+/* `exemplar`: what the preview grows. */
 static gboolean
 render_form (TsRenderArgs *args, const gchar *title, const gchar *procedure,
-             const TsExemplar *exemplar)
+             TsPreviewKind kind, const TsExemplar *exemplar)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
-  PreviewSource source = { exemplar, args, NULL, NULL, NULL, NULL, &seed };
+  TsPreviewInput input = { .kind = kind, .exemplars = exemplar, .n_exemplars = 1 };
+  PreviewSource source = { &input, args, &seed, NULL, NULL };
 
   form_begin (&form, title, procedure);
-  if (exemplar)
-    form_preview (&form, &source);
+  form_preview (&form, &source);
   form_int (&form, "width", &args->width, 1, TS_PLUGIN_MAX_SIDE, 4096);
   form_int (&form, "height", &args->height, 1, TS_PLUGIN_MAX_SIDE, 4096);
   form_toggle (&form, "tileable", &args->tileable);
@@ -224,23 +263,27 @@ render_form (TsRenderArgs *args, const gchar *title, const gchar *procedure,
 gboolean
 ts_render_dialog2 (TsRenderArgs *args, const TsExemplar *exemplar)
 {
-  return render_form (args, _("Texture Synthesis"), TS_PROC_RENDER, exemplar);
+  return render_form (args, _("Texture Synthesis"), TS_PROC_RENDER, TS_PREVIEW_RENDER, exemplar);
 }
 
 gboolean
-ts_layers_dialog2 (TsRenderArgs *args)
+ts_layers_dialog2 (TsRenderArgs *args, const TsExemplar *driver)
 {
-  return render_form (args, _("Texture Synthesis of All Layers"), TS_PROC_RENDER_LAYERS, NULL);
+  return render_form (args, _("Texture Synthesis of All Layers"), TS_PROC_RENDER_LAYERS,
+                      TS_PREVIEW_LAYERS, driver);
 }
 
 gboolean
-ts_tileable_dialog2 (TsTileableArgs *args)
+ts_tileable_dialog2 (TsTileableArgs *args, const TsPreviewInput *preview)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
+  PreviewSource source = { preview, args, &seed, NULL, NULL };
 
   form_begin (&form, _("Make Seamless by Synthesis"), TS_PROC_TILEABLE);
+  if (preview)
+    form_preview (&form, &source);
   form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
             TS_PLUGIN_MAX_QUALITY);
   form_seed (&form, &seed, &randomize);
@@ -251,15 +294,15 @@ ts_tileable_dialog2 (TsTileableArgs *args)
 
 gboolean
 ts_heal_dialog2 (TsHealArgs *args, const gchar *procedure, const gchar *title,
-                 GeglBuffer *preview_pixels, GeglBuffer *preview_mask)
+                 const TsPreviewInput *preview)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
-  PreviewSource source = { NULL, NULL, NULL, args, preview_pixels, preview_mask, &seed };
+  PreviewSource source = { preview, args, &seed, NULL, NULL };
 
   form_begin (&form, title, procedure);
-  if (preview_pixels && preview_mask)
+  if (preview)
     form_preview (&form, &source);
   if (g_str_equal (procedure, TS_PROC_UNCROP))
     form_int (&form, "percent", &args->percent, 1, TS_PLUGIN_MAX_UNCROP, 50);
@@ -328,7 +371,8 @@ ts_solid_dialog2 (TsSolidArgs *args, const TsExemplar *exemplar)
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
   GtkWidget *entry;
-  PreviewSource source = { exemplar, NULL, args, NULL, NULL, NULL, &seed };
+  TsPreviewInput input = { .kind = TS_PREVIEW_SOLID, .exemplars = exemplar, .n_exemplars = 1 };
+  PreviewSource source = { &input, args, &seed, NULL, NULL };
 
   form_begin (&form, _("Solid Texture"), TS_PROC_SOLID);
   form_preview (&form, &source);
@@ -393,14 +437,17 @@ form_double (Form *form, const gchar *name, gdouble *value, gdouble min, gdouble
 
 gboolean
 ts_guided_dialog2 (const gchar *procedure, TsGuidedArgs *args, gint32 target, gint32 *exemplar,
-                   gint32 *guide)
+                   gint32 *guide, const TsPreviewInput *preview)
 {
   Form form;
   guint32 seed = (guint32) args->seed;
   gboolean randomize = FALSE, ok;
+  PreviewSource source = { preview, args, &seed, exemplar, guide };
 
   form_begin (&form, guide ? _("Texture by Numbers") : _("Style Transfer by Synthesis"),
               procedure);
+  if (preview)
+    form_preview (&form, &source);
   form_layer (&form, guide ? "exemplar" : "style", target, exemplar);
   if (guide)
     form_layer (&form, "exemplar-guide", target, guide);

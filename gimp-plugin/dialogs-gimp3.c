@@ -3,17 +3,40 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <stdarg.h>
+#include <string.h>
 
 #include "dialogs-gimp3.h"
 #include "dialog-preview.h"
+#include "compat-gimp3.h"
 
 #include <libgimp/gimpui.h>
 
 typedef struct
 {
-  const TsDialogPreview *preview;
-  GimpProcedureConfig   *config;
+  const TsPreviewInput *preview;
+  GimpProcedureConfig  *config;
 } PreviewSource;
+
+/* A private copy of the layer in the config's `property`; NULL if none. */
+static GeglBuffer *
+read_layer (GimpProcedureConfig *config, const gchar *property)
+{
+  GimpDrawable *drawable = NULL;
+  GeglBuffer *buffer = NULL;
+  TsExemplar exemplar;
+  gchar *message = NULL;
+
+  if (g_object_class_find_property (G_OBJECT_GET_CLASS (config), property))
+    g_object_get (config, property, &drawable, NULL);
+  if (drawable && read_exemplar (drawable, FALSE, &exemplar, &message))
+    {
+      buffer = g_object_ref (exemplar.buffer);
+      ts_exemplar_clear (&exemplar);
+    }
+  g_free (message);
+  g_clear_object (&drawable);
+  return buffer;
+}
 
 /* The widgets write every change into the config: it holds the settings
  * as the dialog shows them. */
@@ -21,43 +44,65 @@ static TsPreview *
 start_preview (gpointer data)
 {
   const PreviewSource *source = data;
+  GObject *config = G_OBJECT (source->config);
+  TsPreviewSettings settings;
+  TsPreview *preview;
 
-  if (source->preview->kind == TS_DIALOG_PREVIEW_HEAL)
+  memset (&settings, 0, sizeof settings);
+  switch (source->preview->kind)
     {
-      TsHealArgs args;
-
-      ts_heal_args_init (&args);
-      g_object_get (source->config, "context", &args.context, "sample-from", &args.sample_from,
-                    "quality", &args.quality, "seed", &args.seed, NULL);
-      return ts_preview_start_heal (source->preview->heal_pixels, source->preview->heal_mask,
-                                    &args);
+    case TS_PREVIEW_RENDER:
+    case TS_PREVIEW_LAYERS:
+      g_object_get (config, "width", &settings.render.width, "height", &settings.render.height,
+                    "tileable", &settings.render.tileable, "quality", &settings.render.quality,
+                    "seed", &settings.render.seed, NULL);
+      break;
+    case TS_PREVIEW_SOLID:
+      ts_solid_args_init (&settings.solid);
+      g_object_get (config, "size", &settings.solid.size, "quality", &settings.solid.quality,
+                    "seed", &settings.solid.seed,
+                    "cell-structure", &settings.solid.cell_structure, NULL);
+      break;
+    case TS_PREVIEW_HEAL_SELECTION:
+    case TS_PREVIEW_HEAL_TRANSPARENCY:
+    case TS_PREVIEW_UNCROP:
+      ts_heal_args_init (&settings.heal);
+      if (source->preview->kind == TS_PREVIEW_UNCROP)
+        g_object_get (config, "percent", &settings.heal.percent, NULL);
+      else
+        g_object_get (config, "context", &settings.heal.context,
+                      "sample-from", &settings.heal.sample_from, NULL);
+      g_object_get (config, "quality", &settings.heal.quality, "seed", &settings.heal.seed, NULL);
+      break;
+    case TS_PREVIEW_TILEABLE:
+      g_object_get (config, "quality", &settings.tileable.quality,
+                    "seed", &settings.tileable.seed, NULL);
+      break;
+    case TS_PREVIEW_GUIDED:
+      ts_guided_args_init (&settings.guided);
+      g_object_get (config, "guide-weight", &settings.guided.guide_weight,
+                    "quality", &settings.guided.quality, "seed", &settings.guided.seed, NULL);
+      /* Texture by numbers has an exemplar, its guide and tileable; style
+       * transfer only a style. */
+      if (g_object_class_find_property (G_OBJECT_GET_CLASS (config), "tileable"))
+        g_object_get (config, "tileable", &settings.guided.tileable, NULL);
+      settings.exemplar = read_layer (source->config, "exemplar");
+      if (!settings.exemplar)
+        settings.exemplar = read_layer (source->config, "style");
+      settings.exemplar_guide = read_layer (source->config, "exemplar-guide");
+      break;
     }
-  else if (source->preview->kind == TS_DIALOG_PREVIEW_SOLID)
-    {
-      TsSolidArgs args;
-
-      ts_solid_args_init (&args);
-      g_object_get (source->config, "size", &args.size, "quality", &args.quality,
-                    "seed", &args.seed, "cell-structure", &args.cell_structure, NULL);
-      return ts_preview_start_solid (source->preview->exemplars, source->preview->n_exemplars,
-                                     &args);
-    }
-  else
-    {
-      TsRenderArgs args;
-
-      g_object_get (source->config, "width", &args.width, "height", &args.height,
-                    "tileable", &args.tileable, "quality", &args.quality,
-                    "seed", &args.seed, NULL);
-      return ts_preview_start_render (source->preview->exemplars, &args);
-    }
+  preview = ts_preview_start (source->preview, &settings);
+  g_clear_object (&settings.exemplar);
+  g_clear_object (&settings.exemplar_guide);
+  return preview;
 }
 
 gboolean
 ts_dialog3 (GimpProcedure         *procedure,
             GimpProcedureConfig   *config,
             const gchar           *title,
-            const TsDialogPreview *preview,
+            const TsPreviewInput  *preview,
             const gchar           *first_property,
             ...)
 {
@@ -98,7 +143,8 @@ ts_dialog3 (GimpProcedure         *procedure,
     {
       /* First, as in GIMP's own filter dialogs. */
       GtkWidget *content = gtk_dialog_get_content_area (GTK_DIALOG (dialog));
-      GtkWidget *widget = ts_preview_widget_new (start_preview, &source);
+      GtkWidget *widget = ts_preview_widget_new (start_preview, &source,
+                                                 ts_preview_caption (preview->kind));
 
       gtk_box_pack_start (GTK_BOX (content), widget, FALSE, FALSE, 0);
       gtk_box_reorder_child (GTK_BOX (content), widget, 0);

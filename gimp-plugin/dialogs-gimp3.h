@@ -5,32 +5,15 @@
 #define TEXSYNTH_DIALOGS_GIMP3_H
 
 #include "texsynth-plugin.h"
+#include "plugin-preview.h"
 
-/* What a dialog's preview runs with the config's current values: the
- * render or the solid procedure's small run on `exemplars`, or healing
- * heal_pixels with heal_mask (ts_heal_preview_crop's). */
-typedef enum
-{
-  TS_DIALOG_PREVIEW_RENDER,
-  TS_DIALOG_PREVIEW_SOLID,
-  TS_DIALOG_PREVIEW_HEAL
-} TsDialogPreviewKind;
-
-typedef struct
-{
-  TsDialogPreviewKind kind;
-  const TsExemplar   *exemplars;
-  gint                n_exemplars;
-  GeglBuffer         *heal_pixels;
-  GeglBuffer         *heal_mask;
-} TsDialogPreview;
-
-/* Shows the listed arguments (NULL-terminated), and a preview unless
- * `preview` is NULL; TRUE on OK, with the config updated. */
+/* Shows the listed arguments (NULL-terminated), and a preview of what
+ * `preview` holds (read of GIMP by the caller) with the config's values
+ * of the moment, unless it is NULL; TRUE on OK, with the config updated. */
 gboolean ts_dialog3 (GimpProcedure         *procedure,
                      GimpProcedureConfig   *config,
                      const gchar           *title,
-                     const TsDialogPreview *preview,
+                     const TsPreviewInput  *preview,
                      const gchar           *first_property,
                      ...) G_GNUC_NULL_TERMINATED;
 

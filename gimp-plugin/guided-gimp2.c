@@ -84,6 +84,9 @@ read_arguments (const gchar *name, GimpRunMode mode, const GimpParam *params, gi
 {
   gboolean by_numbers = g_str_equal (name, TS_PROC_BY_NUMBERS);
   gint expected = by_numbers ? 9 : 7, next = 3;
+  TsPreviewInput preview = { .kind = TS_PREVIEW_GUIDED, .ratio = 1.0 };
+  GeglBuffer *buffer;
+  gboolean ok;
 
   ts_guided_args_init (&last->args);
   last->exemplar = last->guide = -1;
@@ -112,8 +115,14 @@ read_arguments (const gchar *name, GimpRunMode mode, const GimpParam *params, gi
   if (!gimp_item_is_valid (last->guide) || last->guide == target)
     last->guide = -1;
   last->args.seed = ts_plugin_random_seed ();
-  if (!ts_guided_dialog2 (name, &last->args, target, &last->exemplar,
-                          by_numbers ? &last->guide : NULL))
+  buffer = gimp_drawable_get_buffer (target);
+  /* The preview paints the target's middle, at the result's scale. */
+  preview.pixels = ts_preview_copy (buffer, TS_PREVIEW_SIDE, FALSE, &preview.ratio);
+  g_object_unref (buffer);
+  ok = ts_guided_dialog2 (name, &last->args, target, &last->exemplar,
+                          by_numbers ? &last->guide : NULL, preview.pixels ? &preview : NULL);
+  g_clear_object (&preview.pixels);
+  if (!ok)
     return fail (outcome, GIMP_PDB_CANCEL, NULL);
   return TRUE;
 }

@@ -74,12 +74,21 @@ run_guided (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
   target = drawables[0];
   if (mode == GIMP_RUN_INTERACTIVE)
     {
+      GeglBuffer *buffer = gimp_drawable_get_buffer (target);
+      TsPreviewInput preview = { .kind = TS_PREVIEW_GUIDED, .ratio = 1.0 };
+      const TsPreviewInput *shown;
+
+      /* The preview paints the target's middle, at the result's scale. */
+      preview.pixels = ts_preview_copy (buffer, TS_PREVIEW_SIDE, FALSE, &preview.ratio);
+      g_object_unref (buffer);
+      shown = preview.pixels ? &preview : NULL;
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      ok = by_numbers ? ts_dialog3 (procedure, config, _("Texture by Numbers"), NULL,
+      ok = by_numbers ? ts_dialog3 (procedure, config, _("Texture by Numbers"), shown,
                                     "exemplar", "exemplar-guide", "guide-weight", "tileable",
                                     "quality", "seed", NULL)
-                      : ts_dialog3 (procedure, config, _("Style Transfer by Synthesis"), NULL,
+                      : ts_dialog3 (procedure, config, _("Style Transfer by Synthesis"), shown,
                                     "style", "guide-weight", "quality", "seed", NULL);
+      g_clear_object (&preview.pixels);
       if (!ok)
         return failure (procedure, GIMP_PDB_CANCEL, NULL);
     }

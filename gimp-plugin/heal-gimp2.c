@@ -2,33 +2,52 @@
  * uncrop) around texsynth:heal.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include <string.h>
+
 #include <glib/gi18n-lib.h>
 
 #include "heal-gimp2.h"
 #include "compat-gimp2.h"
 #include "dialogs-gimp2.h"
 
-/* The dialog's preview of healing the selection: the layer and selection
- * around it; NULLs if there is no selection over the layer. */
-static void
-read_preview_crop (gint32 drawable, gint32 image, GeglBuffer **pixels, GeglBuffer **mask)
+/* What the dialog's preview heals: the layer and selection around the
+ * selection (heal selection), or the layer scaled down (the others).
+ * FALSE (no preview) without a selection over the layer, or out of
+ * memory. */
+static gboolean
+read_preview (gint32 drawable, gint32 image, const gchar *name, TsPreviewInput *input)
 {
   GeglRectangle hole;
   TsHealLayer layer = { 0 };
+  GeglBuffer *buffer;
 
-  *pixels = *mask = NULL;
+  memset (input, 0, sizeof *input);
+  input->ratio = 1.0;
+  if (!g_str_equal (name, TS_PROC_HEAL_SELECTION))
+    {
+      input->kind = g_str_equal (name, TS_PROC_UNCROP) ? TS_PREVIEW_UNCROP
+                                                       : TS_PREVIEW_HEAL_TRANSPARENCY;
+      input->image_width = gimp_image_width (image);
+      input->image_height = gimp_image_height (image);
+      buffer = gimp_drawable_get_buffer (drawable);
+      input->pixels = ts_preview_copy (buffer, TS_PREVIEW_SIDE, TRUE, &input->ratio);
+      g_object_unref (buffer);
+      return input->pixels != NULL;
+    }
+  input->kind = TS_PREVIEW_HEAL_SELECTION;
   if (gimp_selection_is_empty (image) ||
       !gimp_drawable_mask_intersect (drawable, &hole.x, &hole.y, &hole.width, &hole.height))
-    return;
+    return FALSE;
   gimp_drawable_offsets (drawable, &layer.offset_x, &layer.offset_y);
   layer.buffer = gimp_drawable_get_buffer (drawable);
   layer.format = gimp_drawable_get_format (drawable);
   layer.width = gimp_drawable_width (drawable);
   layer.height = gimp_drawable_height (drawable);
   layer.selection = gimp_drawable_get_buffer (gimp_image_get_selection (image));
-  ts_heal_preview_crop (&layer, &hole, pixels, mask);
+  ts_heal_preview_crop (&layer, &hole, &input->pixels, &input->mask);
   g_object_unref (layer.buffer);
   g_object_unref (layer.selection);
+  return input->pixels != NULL;
 }
 
 /* The three heal procedures: read the layer (and the selection over it),
@@ -70,18 +89,16 @@ ts_run_heal2 (const gchar *name, GimpRunMode mode, const GimpParam *params, gint
     gimp_get_data (name, &args);
   if (mode == GIMP_RUN_INTERACTIVE)
     {
-      GeglBuffer *preview_pixels = NULL, *preview_mask = NULL;
-      gboolean ok;
+      TsPreviewInput preview;
+      gboolean ok, previewed = read_preview (drawable, image, name, &preview);
 
-      if (selection)
-        read_preview_crop (drawable, image, &preview_pixels, &preview_mask);
       args.seed = ts_plugin_random_seed ();
       ok = ts_heal_dialog2 (&args, name, uncrop ? _("Uncrop by Synthesis")
                                          : selection ? _("Heal Selection by Synthesis")
                                                      : _("Heal Transparency by Synthesis"),
-                            preview_pixels, preview_mask);
-      g_clear_object (&preview_pixels);
-      g_clear_object (&preview_mask);
+                            previewed ? &preview : NULL);
+      g_clear_object (&preview.pixels);
+      g_clear_object (&preview.mask);
       if (!ok)
         return fail (outcome, GIMP_PDB_CANCEL, NULL);
     }

@@ -2,39 +2,58 @@
  * around texsynth:heal.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include <string.h>
+
 #include <glib/gi18n-lib.h>
 
 #include "heal-gimp3.h"
 #include "compat-gimp3.h"
 #include "dialogs-gimp3.h"
 
-/* The three heal procedures: read the layer (and the selection over it),
- * run texsynth:heal, write the result back as one undo step; for uncrop
- * the layer with a transparent border is healed before GIMP is touched. */
-/* The dialog's preview of healing the selection: the layer and selection
- * around it; NULLs if there is no selection over the layer. */
-static void
-read_preview_crop (GimpDrawable *drawable, GimpImage *image, GeglBuffer **pixels,
-                   GeglBuffer **mask)
+/* What the dialog's preview heals: the layer and selection around the
+ * selection (heal selection), or the layer scaled down (the others).
+ * FALSE (no preview) without a selection over the layer, or out of
+ * memory. */
+static gboolean
+read_preview (GimpDrawable *drawable, GimpImage *image, const gchar *name,
+              TsPreviewInput *input)
 {
   GeglRectangle hole;
   TsHealLayer layer = { 0 };
+  GeglBuffer *buffer;
 
-  *pixels = *mask = NULL;
+  memset (input, 0, sizeof *input);
+  input->ratio = 1.0;
+  if (!g_str_equal (name, TS_PROC_HEAL_SELECTION))
+    {
+      input->kind = g_str_equal (name, TS_PROC_UNCROP) ? TS_PREVIEW_UNCROP
+                                                       : TS_PREVIEW_HEAL_TRANSPARENCY;
+      input->image_width = gimp_image_get_width (image);
+      input->image_height = gimp_image_get_height (image);
+      buffer = gimp_drawable_get_buffer (drawable);
+      input->pixels = ts_preview_copy (buffer, TS_PREVIEW_SIDE, TRUE, &input->ratio);
+      g_object_unref (buffer);
+      return input->pixels != NULL;
+    }
+  input->kind = TS_PREVIEW_HEAL_SELECTION;
   if (gimp_selection_is_empty (image) ||
       !gimp_drawable_mask_intersect (drawable, &hole.x, &hole.y, &hole.width, &hole.height))
-    return;
+    return FALSE;
   gimp_drawable_get_offsets (drawable, &layer.offset_x, &layer.offset_y);
   layer.buffer = gimp_drawable_get_buffer (drawable);
   layer.format = gimp_drawable_get_format (drawable);
   layer.width = gimp_drawable_get_width (drawable);
   layer.height = gimp_drawable_get_height (drawable);
   layer.selection = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)));
-  ts_heal_preview_crop (&layer, &hole, pixels, mask);
+  ts_heal_preview_crop (&layer, &hole, &input->pixels, &input->mask);
   g_object_unref (layer.buffer);
   g_object_unref (layer.selection);
+  return input->pixels != NULL;
 }
 
+/* The three heal procedures: read the layer (and the selection over it),
+ * run texsynth:heal, write the result back as one undo step; for uncrop
+ * the layer with a transparent border is healed before GIMP is touched. */
 GimpValueArray *
 ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
               GimpDrawable **drawables, GimpProcedureConfig *config, gpointer data G_GNUC_UNUSED)
@@ -57,20 +76,19 @@ ts_run_heal3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
   drawable = drawables[0];
   if (mode == GIMP_RUN_INTERACTIVE)
     {
-      TsDialogPreview preview = { TS_DIALOG_PREVIEW_HEAL, NULL, 0, NULL, NULL };
+      TsPreviewInput preview;
+      gboolean previewed = read_preview (drawable, image, name, &preview);
 
-      if (selection)
-        read_preview_crop (drawable, image, &preview.heal_pixels, &preview.heal_mask);
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      ok = uncrop ? ts_dialog3 (procedure, config, _("Uncrop by Synthesis"), NULL,
-                                "percent", "quality", "seed", NULL)
+      ok = uncrop ? ts_dialog3 (procedure, config, _("Uncrop by Synthesis"),
+                                previewed ? &preview : NULL, "percent", "quality", "seed", NULL)
                   : ts_dialog3 (procedure, config,
                                 selection ? _("Heal Selection by Synthesis")
                                           : _("Heal Transparency by Synthesis"),
-                                preview.heal_pixels ? &preview : NULL,
+                                previewed ? &preview : NULL,
                                 "context", "sample-from", "quality", "seed", NULL);
-      g_clear_object (&preview.heal_pixels);
-      g_clear_object (&preview.heal_mask);
+      g_clear_object (&preview.pixels);
+      g_clear_object (&preview.mask);
       if (!ok)
         return failure (procedure, GIMP_PDB_CANCEL, NULL);
     }

@@ -91,6 +91,14 @@ ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params, Outcom
       g_free (ids);
       return fail (outcome, GIMP_PDB_CALLING_ERROR, message);
     }
+  /* Before the dialog: its preview grows the driving layer. */
+  if (!read_set (ids, n, driver, &set, &message))
+    {
+      g_free (ids);
+      ts_material_set_clear (&set);
+      return fail (outcome, GIMP_PDB_EXECUTION_ERROR, message);
+    }
+  g_free (ids);
   if (mode == GIMP_RUN_INTERACTIVE)
     {
       if (args.width < 1)
@@ -99,24 +107,17 @@ ts_run_layers2 (GimpRunMode mode, const GimpParam *params, gint n_params, Outcom
           args.height = MIN (2 * gimp_drawable_height (driver), TS_PLUGIN_MAX_SIDE);
         }
       args.seed = ts_plugin_random_seed ();
-      if (!ts_layers_dialog2 (&args))
+      if (!ts_layers_dialog2 (&args, &set.exemplars[set.driver]))
         {
-          g_free (ids);
+          ts_material_set_clear (&set);
           return fail (outcome, GIMP_PDB_CANCEL, NULL);
         }
     }
   if ((message = ts_render_args_check (&args)))
     {
-      g_free (ids);
+      ts_material_set_clear (&set);
       return fail (outcome, GIMP_PDB_CALLING_ERROR, message);
     }
-  if (!read_set (ids, n, driver, &set, &message))
-    {
-      g_free (ids);
-      ts_material_set_clear (&set);
-      return fail (outcome, GIMP_PDB_EXECUTION_ERROR, message);
-    }
-  g_free (ids);
   if (gimp_drawable_is_indexed (driver))
     g_message (_("The exemplar is indexed: the new image is RGB."));
 

@@ -86,9 +86,19 @@ ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
       g_free (layers);
       return failure (procedure, GIMP_PDB_CALLING_ERROR, message);
     }
+  /* Before the dialog: its preview grows the driving layer. */
+  if (!read_set (layers, driver, &set, &message))
+    {
+      g_free (layers);
+      ts_material_set_clear (&set);
+      return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
+    }
+  g_free (layers);
 
   if (mode == GIMP_RUN_INTERACTIVE)
     {
+      TsPreviewInput preview = { .kind = TS_PREVIEW_LAYERS,
+                                 .exemplars = &set.exemplars[set.driver], .n_exemplars = 1 };
       gboolean size_chosen;
 
       /* Twice the driving layer until the user has chosen a size once. */
@@ -99,10 +109,10 @@ ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
                       "height", MIN (2 * gimp_drawable_get_height (driver), TS_PLUGIN_MAX_SIDE),
                       NULL);
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      if (!ts_dialog3 (procedure, config, _("Texture Synthesis of All Layers"), NULL,
+      if (!ts_dialog3 (procedure, config, _("Texture Synthesis of All Layers"), &preview,
                        "width", "height", "tileable", "quality", "seed", NULL))
         {
-          g_free (layers);
+          ts_material_set_clear (&set);
           return failure (procedure, GIMP_PDB_CANCEL, NULL);
         }
       g_object_set (config, "size-chosen", TRUE, NULL);
@@ -111,16 +121,9 @@ ts_run_layers3 (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image,
                 "tileable", &args.tileable, "quality", &args.quality, "seed", &args.seed, NULL);
   if ((message = ts_render_args_check (&args)))
     {
-      g_free (layers);
+      ts_material_set_clear (&set);
       return failure (procedure, GIMP_PDB_CALLING_ERROR, message);
     }
-  if (!read_set (layers, driver, &set, &message))
-    {
-      g_free (layers);
-      ts_material_set_clear (&set);
-      return failure (procedure, GIMP_PDB_EXECUTION_ERROR, message);
-    }
-  g_free (layers);
   if (gimp_drawable_is_indexed (driver))
     g_message (_("The exemplar is indexed: the new image is RGB."));
 

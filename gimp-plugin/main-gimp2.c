@@ -268,8 +268,16 @@ run_tileable (GimpRunMode mode, const GimpParam *params, gint n_params, Outcome 
 
   if (mode == GIMP_RUN_INTERACTIVE)
     {
+      GeglBuffer *buffer = gimp_drawable_get_buffer (drawable);
+      TsPreviewInput preview = { .kind = TS_PREVIEW_TILEABLE, .ratio = 1.0 };
+      gboolean ok;
+
+      preview.pixels = ts_preview_copy (buffer, TS_PREVIEW_TILE_SIDE, TRUE, &preview.ratio);
+      g_object_unref (buffer);
       args.seed = ts_plugin_random_seed ();
-      if (!ts_tileable_dialog2 (&args))
+      ok = ts_tileable_dialog2 (&args, preview.pixels ? &preview : NULL);
+      g_clear_object (&preview.pixels);
+      if (!ok)
         return fail (outcome, GIMP_PDB_CANCEL, NULL);
     }
   if ((message = ts_tileable_args_check (&args, gimp_drawable_width (drawable),

@@ -50,7 +50,8 @@ run_render (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
     {
       const GeglRectangle *extent = gegl_buffer_get_extent (exemplar.buffer);
       gboolean size_chosen;
-      TsDialogPreview preview = { TS_DIALOG_PREVIEW_RENDER, &exemplar, 1, NULL, NULL };
+      TsPreviewInput preview = { .kind = TS_PREVIEW_RENDER, .exemplars = &exemplar,
+                                 .n_exemplars = 1 };
 
       /* Twice the exemplar until the user has chosen a size once. */
       g_object_get (config, "size-chosen", &size_chosen, NULL);
@@ -112,9 +113,16 @@ run_tileable (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNU
 
   if (mode == GIMP_RUN_INTERACTIVE)
     {
+      GeglBuffer *buffer = gimp_drawable_get_buffer (drawable);
+      TsPreviewInput preview = { .kind = TS_PREVIEW_TILEABLE, .ratio = 1.0 };
+
+      preview.pixels = ts_preview_copy (buffer, TS_PREVIEW_TILE_SIDE, TRUE, &preview.ratio);
+      g_object_unref (buffer);
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
-      if (!ts_dialog3 (procedure, config, _("Make Seamless by Synthesis"), NULL,
-                       "quality", "seed", NULL))
+      ok = ts_dialog3 (procedure, config, _("Make Seamless by Synthesis"),
+                       preview.pixels ? &preview : NULL, "quality", "seed", NULL);
+      g_clear_object (&preview.pixels);
+      if (!ok)
         return failure (procedure, GIMP_PDB_CANCEL, NULL);
     }
   g_object_get (config, "quality", &args.quality, "seed", &args.seed, NULL);
@@ -172,7 +180,8 @@ run_solid (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_U
   ok = n_read == n;
   if (ok && mode == GIMP_RUN_INTERACTIVE)
     {
-      TsDialogPreview preview = { TS_DIALOG_PREVIEW_SOLID, exemplars, n, NULL, NULL };
+      TsPreviewInput preview = { .kind = TS_PREVIEW_SOLID, .exemplars = exemplars,
+                                 .n_exemplars = n };
 
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
       if (!ts_dialog3 (procedure, config, _("Solid Texture"), &preview, "size", "path",

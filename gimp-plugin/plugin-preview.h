@@ -7,6 +7,7 @@
 #define TEXSYNTH_PLUGIN_PREVIEW_H
 
 #include "texsynth-plugin.h"
+#include "guided-plugin.h"
 
 /* The preview's largest side in pixels: small enough that a run takes a
  * fraction of a second, large enough to show a texture's structure. */
@@ -16,27 +17,67 @@
  * volume of this edge, which keeps the exemplar's scale. */
 #define TS_PREVIEW_SOLID_SIZE 48
 
+/* Make Seamless's preview: the layer scaled down to fit this side, made
+ * seamless and repeated 2x2, so that the joins show within
+ * TS_PREVIEW_SIDE. */
+#define TS_PREVIEW_TILE_SIDE (TS_PREVIEW_SIDE / 2)
+
 typedef struct _TsPreview TsPreview;
 
-/* Start texsynth:synthesize at min(width, TS_PREVIEW_SIDE) x
- * min(height, TS_PREVIEW_SIDE) with the other settings of `args`: a
- * crop-sized texture at the result's scale. The exemplar's buffer is
- * referenced, not copied; nothing may write to it until the preview is
- * freed. NULL if out of memory. */
-TsPreview *ts_preview_start_render (const TsExemplar *exemplar, const TsRenderArgs *args);
+/* What a dialog's preview shows; each has its own caption. */
+typedef enum
+{
+  TS_PREVIEW_RENDER,
+  TS_PREVIEW_LAYERS,             /* the driving layer's texture          */
+  TS_PREVIEW_SOLID,
+  TS_PREVIEW_HEAL_SELECTION,
+  TS_PREVIEW_HEAL_TRANSPARENCY,
+  TS_PREVIEW_UNCROP,
+  TS_PREVIEW_TILEABLE,
+  TS_PREVIEW_GUIDED
+} TsPreviewKind;
 
-/* Start the middle slice across x of a cube of min(size,
- * TS_PREVIEW_SOLID_SIZE) with the other settings of `args`, through
- * texsynth:volume-slice; no file is written. */
-TsPreview *ts_preview_start_solid (const TsExemplar  *exemplars,
-                                   gint               n_exemplars,
-                                   const TsSolidArgs *args);
+/* What a dialog's preview runs on, read from GIMP before the dialog
+ * opens; the caller keeps it until the dialog is closed. */
+typedef struct
+{
+  TsPreviewKind     kind;
+  const TsExemplar *exemplars;     /* render, layers, solid: 1 to 3          */
+  gint              n_exemplars;
+  GeglBuffer       *pixels;        /* heal selection: the crop around it;
+                                    * the others: ts_preview_copy's         */
+  GeglBuffer       *mask;          /* heal selection: the selection on it    */
+  gdouble           ratio;         /* pixels' scale against the layer's     */
+  gint              image_width;   /* uncrop: the image's size              */
+  gint              image_height;
+} TsPreviewInput;
 
-/* texsynth:heal on `pixels` with `mask` (the hole, "Y' float", same
- * size), both referenced: the crop around a selection that
- * ts_heal_preview_crop reads. The result is scaled down to fit
- * TS_PREVIEW_SIDE when the crop is larger. */
-TsPreview *ts_preview_start_heal (GeglBuffer *pixels, GeglBuffer *mask, const TsHealArgs *args);
+/* The dialog's settings as it shows them, those of input->kind read. */
+typedef struct
+{
+  TsRenderArgs   render;     /* render, layers */
+  TsSolidArgs    solid;
+  TsHealArgs     heal;       /* heal selection, heal transparency, uncrop */
+  TsTileableArgs tileable;
+  TsGuidedArgs   guided;
+  GeglBuffer    *exemplar;        /* guided: the layers the dialog picks */
+  GeglBuffer    *exemplar_guide;  /* NULL for style transfer             */
+} TsPreviewSettings;
+
+/* Starts the preview of input->kind with `settings`; NULL if it cannot
+ * (out of memory, or no exemplar or a guide of another size picked). */
+TsPreview *ts_preview_start (const TsPreviewInput *input, const TsPreviewSettings *settings);
+
+/* A line under the preview saying what it shows and how it differs from
+ * the result, translated. */
+const gchar *ts_preview_caption (TsPreviewKind kind);
+
+/* A small private copy of `source` (a GIMP drawable's buffer, at (0, 0)),
+ * read in this thread, as "R'G'B'A float" in its space at (0, 0): the
+ * whole of it scaled down by *ratio to fit `side` (scale_down), or its
+ * middle side x side pixels at full scale (*ratio 1). NULL if out of
+ * memory. */
+GeglBuffer *ts_preview_copy (GeglBuffer *source, gint side, gboolean scale_down, gdouble *ratio);
 
 /* Whether the run has finished; never blocks. */
 gboolean ts_preview_done (TsPreview *preview);
