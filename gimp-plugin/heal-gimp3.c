@@ -2,53 +2,35 @@
  * around texsynth:heal.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <string.h>
-
 #include <glib/gi18n-lib.h>
 
 #include "heal-gimp3.h"
 #include "compat-gimp3.h"
 #include "dialogs-gimp3.h"
 
-/* What the dialog's preview heals: the layer and selection around the
- * selection (heal selection), or the layer scaled down (the others).
- * FALSE (no preview) without a selection over the layer, or out of
- * memory. */
+/* What the dialog's preview heals (ts_heal_preview_read). */
 static gboolean
 read_preview (GimpDrawable *drawable, GimpImage *image, const gchar *name,
               TsPreviewInput *input)
 {
   GeglRectangle hole;
-  TsHealLayer layer = { 0 };
-  GeglBuffer *buffer;
+  gboolean over = !gimp_selection_is_empty (image) &&
+                  gimp_drawable_mask_intersect (drawable, &hole.x, &hole.y, &hole.width,
+                                                &hole.height);
+  TsHealLayer layer = {
+    .buffer = gimp_drawable_get_buffer (drawable),
+    .format = gimp_drawable_get_format (drawable),
+    .width = gimp_drawable_get_width (drawable), .height = gimp_drawable_get_height (drawable),
+    .selection = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image))),
+  };
+  gboolean read;
 
-  memset (input, 0, sizeof *input);
-  input->ratio = 1.0;
-  if (!g_str_equal (name, TS_PROC_HEAL_SELECTION))
-    {
-      input->kind = g_str_equal (name, TS_PROC_UNCROP) ? TS_PREVIEW_UNCROP
-                                                       : TS_PREVIEW_HEAL_TRANSPARENCY;
-      input->image_width = gimp_image_get_width (image);
-      input->image_height = gimp_image_get_height (image);
-      buffer = gimp_drawable_get_buffer (drawable);
-      input->pixels = ts_preview_copy (buffer, TS_PREVIEW_SIDE, TRUE, &input->ratio);
-      g_object_unref (buffer);
-      return input->pixels != NULL;
-    }
-  input->kind = TS_PREVIEW_HEAL_SELECTION;
-  if (gimp_selection_is_empty (image) ||
-      !gimp_drawable_mask_intersect (drawable, &hole.x, &hole.y, &hole.width, &hole.height))
-    return FALSE;
   gimp_drawable_get_offsets (drawable, &layer.offset_x, &layer.offset_y);
-  layer.buffer = gimp_drawable_get_buffer (drawable);
-  layer.format = gimp_drawable_get_format (drawable);
-  layer.width = gimp_drawable_get_width (drawable);
-  layer.height = gimp_drawable_get_height (drawable);
-  layer.selection = gimp_drawable_get_buffer (GIMP_DRAWABLE (gimp_image_get_selection (image)));
-  ts_heal_preview_crop (&layer, &hole, &input->pixels, &input->mask);
+  read = ts_heal_preview_read (&layer, name, over ? &hole : NULL, gimp_image_get_width (image),
+                               gimp_image_get_height (image), input);
   g_object_unref (layer.buffer);
   g_object_unref (layer.selection);
-  return input->pixels != NULL;
+  return read;
 }
 
 /* The three heal procedures: read the layer (and the selection over it),

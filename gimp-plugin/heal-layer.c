@@ -5,7 +5,10 @@
  */
 #include <glib/gi18n-lib.h>
 
+#include <string.h>
+
 #include "texsynth-plugin.h"
+#include "plugin-preview.h"
 
 /* The layer's pixels at (0, 0), `border_x`, `border_y` further in for
  * uncrop, in `format`; NULL if out of memory. */
@@ -95,4 +98,23 @@ ts_heal_preview_crop (const TsHealLayer   *layer,
       return FALSE;
     }
   return TRUE;
+}
+
+gboolean
+ts_heal_preview_read (const TsHealLayer *layer, const gchar *procedure, const GeglRectangle *hole,
+                      gint image_width, gint image_height, TsPreviewInput *input)
+{
+  memset (input, 0, sizeof *input);
+  input->ratio = 1.0;
+  if (g_str_equal (procedure, TS_PROC_HEAL_SELECTION))
+    {
+      input->kind = TS_PREVIEW_HEAL_SELECTION;
+      return hole && ts_heal_preview_crop (layer, hole, &input->pixels, &input->mask);
+    }
+  input->kind = g_str_equal (procedure, TS_PROC_UNCROP) ? TS_PREVIEW_UNCROP
+                                                        : TS_PREVIEW_HEAL_TRANSPARENCY;
+  input->image_width = image_width;
+  input->image_height = image_height;
+  input->pixels = ts_preview_copy (layer->buffer, TS_PREVIEW_SIDE, TRUE, &input->ratio);
+  return input->pixels != NULL;
 }

@@ -79,6 +79,18 @@ const gchar *ts_preview_caption (TsPreviewKind kind);
  * memory. */
 GeglBuffer *ts_preview_copy (GeglBuffer *source, gint side, gboolean scale_down, gdouble *ratio);
 
+/* What a heal procedure's dialog previews (`procedure` names it): the
+ * crop around `hole` (the selection's bounds in the layer; NULL when the
+ * selection misses the layer) for heal selection, else the layer scaled
+ * down, in an image of image_width x image_height for uncrop. FALSE (no
+ * preview) without a hole for heal selection, or out of memory. */
+gboolean ts_heal_preview_read (const TsHealLayer   *layer,
+                               const gchar         *procedure,
+                               const GeglRectangle *hole,
+                               gint                 image_width,
+                               gint                 image_height,
+                               TsPreviewInput      *input);
+
 /* Whether the run has finished; never blocks. */
 gboolean ts_preview_done (TsPreview *preview);
 
