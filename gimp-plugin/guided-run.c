@@ -58,28 +58,17 @@ ts_plugin_guided (const TsExemplar   *exemplar,
                                       "guide-weight", args->guide_weight,
                                       "tileable", args->tileable, "quality", args->quality,
                                       "seed", args->seed, NULL);
-  GeglNode *watched[] = { op, NULL };
-  GeglNode *sink;
+  gboolean ok;
 
-  *result = ts_plugin_result_buffer (extent->width, extent->height);
-  sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
-  gegl_node_link_many (ts_plugin_source_node (graph, target), op, sink, NULL);
+  gegl_node_link (ts_plugin_source_node (graph, target), op);
   ts_plugin_connect_pads (ts_plugin_source_node (graph, exemplar->buffer), op, "aux");
   if (exemplar_guide)
     ts_plugin_connect_pads (ts_plugin_source_node (graph, exemplar_guide), op, "aux2");
-  ts_plugin_run_graph (sink, watched, 0.0, 1.0);
+  ok = ts_plugin_run_op (op, extent->width, extent->height, NULL, 0.0, 1.0,
+                         _("Guided synthesis failed: the exemplar may be too small or fully "
+                           "transparent, the target smaller than 3\303\2273 pixels, or the "
+                           "result too large for the memory (see the error console for the "
+                           "details)."), result, error);
   g_object_unref (graph);
-
-  /* The op's only failure result is a transparent image, with a warning
-   * on the console that says why. */
-  if (ts_plugin_fully_transparent (*result))
-    {
-      g_clear_object (result);
-      g_set_error (error, TS_PLUGIN_ERROR, 0,
-                   _("Guided synthesis failed: the exemplar may be too small or fully "
-                     "transparent, the target smaller than 3\303\2273 pixels, or the result "
-                     "too large for the memory (see the error console for the details)."));
-      return FALSE;
-    }
-  return TRUE;
+  return ok;
 }

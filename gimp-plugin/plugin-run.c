@@ -255,62 +255,78 @@ ts_plugin_fully_transparent (GeglBuffer *buffer)
 }
 
 gboolean
-ts_plugin_render (const TsExemplar   *exemplar,
-                  const TsRenderArgs *args,
-                  GeglBuffer        **result,
-                  GError            **error)
+ts_plugin_run_op (GeglNode    *op,
+                  gint         width,
+                  gint         height,
+                  const Babl  *format,
+                  gdouble      start,
+                  gdouble      end,
+                  const gchar *failure,
+                  GeglBuffer **result,
+                  GError     **error)
 {
-  GeglNode *graph = gegl_node_new ();
-  GeglNode *source = ts_plugin_source_node (graph, exemplar->buffer);
-  GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_SYNTHESIZE,
-                                      "width", args->width, "height", args->height,
-                                      "tileable", args->tileable, "quality", args->quality,
-                                      "seed", args->seed, NULL);
+  GeglRectangle rect = { 0, 0, width, height };
   GeglNode *watched[] = { op, NULL };
   GeglNode *sink;
 
-  *result = ts_plugin_result_buffer (args->width, args->height);
-  sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
-  gegl_node_link_many (source, op, sink, NULL);
-  ts_plugin_run_graph (sink, watched, 0.0, 1.0);
-  g_object_unref (graph);
+  *result = format ? gegl_buffer_new (&rect, format) : ts_plugin_result_buffer (width, height);
+  sink = gegl_node_new_child (gegl_node_get_parent (op), "operation", "gegl:write-buffer",
+                              "buffer", *result, NULL);
+  gegl_node_link (op, sink);
+  ts_plugin_run_graph (sink, watched, start, end);
 
-  /* The op's only failure result is a transparent image (with a warning
-   * on the console), e.g. for a fully transparent or too small exemplar. */
-  if (ts_plugin_fully_transparent (*result))
+  /* The ops' only failure result is a transparent image, with a warning
+   * on the console that says why. */
+  if (failure && ts_plugin_fully_transparent (*result))
     {
       g_clear_object (result);
-      g_set_error (error, TS_PLUGIN_ERROR, 0,
-                   _("Texture synthesis failed: the exemplar may be too small, fully "
-                     "transparent, or the result too large for the memory (see the "
-                     "error console for the details)."));
+      g_set_error (error, TS_PLUGIN_ERROR, 0, "%s", failure);
       return FALSE;
     }
   return TRUE;
 }
 
 gboolean
+ts_plugin_render (const TsExemplar   *exemplar,
+                  const TsRenderArgs *args,
+                  GeglBuffer        **result,
+                  GError            **error)
+{
+  GeglNode *graph = gegl_node_new ();
+  GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_SYNTHESIZE,
+                                      "width", args->width, "height", args->height,
+                                      "tileable", args->tileable, "quality", args->quality,
+                                      "seed", args->seed, NULL);
+  gboolean ok;
+
+  /* E.g. a fully transparent or too small exemplar fails. */
+  gegl_node_link (ts_plugin_source_node (graph, exemplar->buffer), op);
+  ok = ts_plugin_run_op (op, args->width, args->height, NULL, 0.0, 1.0,
+                         _("Texture synthesis failed: the exemplar may be too small, fully "
+                           "transparent, or the result too large for the memory (see the "
+                           "error console for the details)."), result, error);
+  g_object_unref (graph);
+  return ok;
+}
+
+gboolean
 ts_plugin_tileable (const TsExemplar     *exemplar,
                     const TsTileableArgs *args,
                     GeglBuffer          **result,
-                    GError              **error G_GNUC_UNUSED)
+                    GError              **error)
 {
   const GeglRectangle *extent = gegl_buffer_get_extent (exemplar->buffer);
   GeglNode *graph = gegl_node_new ();
-  GeglNode *source = ts_plugin_source_node (graph, exemplar->buffer);
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_TILEABLE,
                                       "quality", args->quality, "seed", args->seed, NULL);
-  GeglNode *watched[] = { op, NULL };
-  GeglNode *sink;
+  gboolean ok;
 
   /* The op's failure leaves the picture as it was, which is what the
    * user gets then too: there is nothing else to report. */
-  *result = ts_plugin_result_buffer (extent->width, extent->height);
-  sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
-  gegl_node_link_many (source, op, sink, NULL);
-  ts_plugin_run_graph (sink, watched, 0.0, 1.0);
+  gegl_node_link (ts_plugin_source_node (graph, exemplar->buffer), op);
+  ok = ts_plugin_run_op (op, extent->width, extent->height, NULL, 0.0, 1.0, NULL, result, error);
   g_object_unref (graph);
-  return TRUE;
+  return ok;
 }
 
 /* A layout the op could not make is cleared (all zeros); a real one holds
@@ -444,21 +460,18 @@ ts_plugin_heal (GeglBuffer        *pixels,
                 GeglBuffer       **result,
                 GError           **error)
 {
+  const GeglRectangle *extent = gegl_buffer_get_extent (pixels);
   GeglNode *graph = gegl_node_new ();
-  GeglNode *source = ts_plugin_source_node (graph, pixels);
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_HEAL,
                                       "context", args->context, "sample-from", args->sample_from,
                                       "quality", args->quality, "seed", args->seed, NULL);
-  GeglNode *watched[] = { op, NULL };
-  GeglNode *sink;
 
-  /* In the layer's own format: kept pixels come back bit for bit. */
-  *result = gegl_buffer_new (gegl_buffer_get_extent (pixels), gegl_buffer_get_format (pixels));
-  sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer", "buffer", *result, NULL);
-  gegl_node_link_many (source, op, sink, NULL);
+  gegl_node_link (ts_plugin_source_node (graph, pixels), op);
   if (mask)
     ts_plugin_connect_pads (ts_plugin_source_node (graph, mask), op, "aux");
-  ts_plugin_run_graph (sink, watched, 0.0, 1.0);
+  /* In the layer's own format: kept pixels come back bit for bit. */
+  ts_plugin_run_op (op, extent->width, extent->height, gegl_buffer_get_format (pixels), 0.0, 1.0,
+                    NULL, result, error);
   g_object_unref (graph);
 
   if (same_pixels (pixels, *result))
@@ -571,16 +584,12 @@ ts_plugin_solid (const TsExemplar  *exemplars,
                                              "size", args->size, "index", args->size / 2,
                                              "quality", args->quality, "seed", args->seed,
                                              "cell-structure", args->cell_structure, NULL);
-      GeglNode *sink;
 
       ts_plugin_set_enum_by_nick (slice, "axis", axes[axis]);
       link_exemplars (graph, slice, exemplars, n_exemplars);
-      slices[axis] = ts_plugin_result_buffer (args->size, args->size);
-      sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
-                                  "buffer", slices[axis], NULL);
-      gegl_node_link (slice, sink);
-      watched[0] = slice;
-      ts_plugin_run_graph (sink, watched, 0.9 + 0.1 * axis / 3.0, 0.9 + 0.1 * (axis + 1) / 3.0);
+      /* The volume was written: its slices are there to read. */
+      ts_plugin_run_op (slice, args->size, args->size, NULL, 0.9 + 0.1 * axis / 3.0,
+                        0.9 + 0.1 * (axis + 1) / 3.0, NULL, &slices[axis], NULL);
     }
   g_object_unref (graph);
   return TRUE;
