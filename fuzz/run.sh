@@ -23,17 +23,30 @@ mkdir -p build-fuzz/artifacts
 
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
-status=0
-for target in fuzz-params fuzz-volume-read; do
-  seeds=fuzz/corpus/${target#fuzz-}
-  work=build-fuzz/corpus-${target#fuzz-}
+# fuzz_one TARGET: runs TARGET for $seconds s; non-zero if it found a bug.
+fuzz_one() {
+  local target=$1 seeds=fuzz/corpus/${1#fuzz-} work=build-fuzz/corpus-${1#fuzz-}
+  local log=build-fuzz/$1.log
   mkdir -p "$work"
-  log=build-fuzz/$target.log
-  echo "== $target: $seconds s from $(ls "$seeds" | wc -l) seeds"
   # New inputs go to the scratch corpus; the committed seeds stay as they are.
-  if ! build-fuzz/fuzz/$target -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \
-       -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/$target- \
-       "$work" "$seeds" > "$log" 2>&1; then
+  build-fuzz/fuzz/$target -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \
+    -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/$target- \
+    "$work" "$seeds" > "$log" 2>&1
+}
+
+# The targets are single-threaded: they run side by side, one per core.
+targets="fuzz-params fuzz-volume-read"
+declare -A pid
+for target in $targets; do
+  echo "== $target: $seconds s from $(ls "fuzz/corpus/${target#fuzz-}" | wc -l) seeds"
+  fuzz_one "$target" &
+  pid[$target]=$!
+done
+status=0
+for target in $targets; do
+  log=build-fuzz/$target.log
+  work=build-fuzz/corpus-${target#fuzz-}
+  if ! wait "${pid[$target]}"; then
     status=1
     tail -n 60 "$log"
     echo "$target FAILED: see $log and build-fuzz/artifacts/"
