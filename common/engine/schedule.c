@@ -61,13 +61,15 @@ fit_patch (size_t want, size_t ex_w, size_t ex_h)
   return want < 1 ? 1 : want;
 }
 
+/* `dense`: a quarter rounded down rather than to the nearest. */
 static void
-set_pass (TsPass *pass, size_t patch, size_t iterations)
+set_pass (TsPass *pass, size_t patch, size_t iterations, bool dense)
 {
   pass->patch = patch;
-  /* About w/4 (Kwatra et al.), but never every pixel: 2 is as good and
-   * four times cheaper. */
-  pass->spacing = patch / 4 > 2 ? patch / 4 : (patch >= 3 ? 2 : 1);
+  /* A quarter of the neighbourhood (Kwatra et al.), but never every
+   * pixel: 2 is as good and four times cheaper. */
+  size_t quarter = dense ? patch / 4 : (patch + 2) / 4;
+  pass->spacing = quarter > 2 ? quarter : (patch >= 3 ? 2 : 1);
   pass->max_iterations = iterations;
   pass->propose_step = patch >= 7 ? 2 : 1;
 }
@@ -97,8 +99,12 @@ ts_schedule_level (const TsParams *params, size_t level, size_t levels,
 
   plan->k_level = k_for_level (params->quality, level);
   plan->k_use = plan->k_level;
+  /* Guided votes also weigh the guide: with fewer of them a style
+   * transfer follows its target less closely. */
+  bool dense = params->guides != NULL;
+
   plan->passes = 0;
-  set_pass (&plan->pass[plan->passes++], large, iterations);
+  set_pass (&plan->pass[plan->passes++], large, iterations, dense);
   if (small < large)
-    set_pass (&plan->pass[plan->passes++], small, iterations);
+    set_pass (&plan->pass[plan->passes++], small, iterations, dense);
 }
