@@ -6,7 +6,7 @@
  * barely changes.
  *
  * Usage: engine-time [-s SIZE] [-c CROP] [-r RUNS] [-e SEED] [-q QUALITY]
- *                    [-T] [-p] EXEMPLAR.png...
+ *                    [-T] [-p] [-I] [-m] [-w DIR] EXEMPLAR.png|EXEMPLAR.WxH.f32...
  *   -s  output side (256)         -c  central CROP x CROP of the exemplar
  *   -r  runs, the median is shown (1)   -e  seed (1)   -q  quality (default)
  *   -T  tileable                  -p  per-stage seconds (last run)
@@ -14,6 +14,10 @@
  *   -I  re-synthesise the exemplar from itself (output = exemplar size,
  *       identity initial map, preserve weight 1 at the border falling to 0
  *       in the middle): the data-term path that texsynth:tileable uses
+ *   -w DIR  also write each (cropped) exemplar, as the engine reads it,
+ *       into DIR as NAME.WxH.f32 (raw Lab + alpha floats, native order)
+ * An exemplar named *.WxH.f32 is read raw, without GEGL: with only such
+ * inputs valgrind can run this program (GEGL's start-up stops it).
  * Threads: OMP_NUM_THREADS.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "texsynth.h"
@@ -109,6 +113,70 @@ crop_centre (TsImage *image, size_t side)
   return true;
 }
 
+/* A raw exemplar, NAME.WxH.f32: false (with `why`) if the name has no
+ * size or the file does not hold exactly that many pixels. */
+static bool
+load_raw (const char *path, TsImage *image, char *why, size_t why_size)
+{
+  size_t len = strlen (path), start = len - 4, w = 0, h = 0, n;
+  FILE *file;
+  long length;
+  char end;
+
+  image->pixels = NULL;
+  while (start > 0 && path[start - 1] != '.')   /* the "WxH" before ".f32" */
+    start--;
+  if (start == 0 || sscanf (path + start, "%zux%zu%c", &w, &h, &end) != 3 || end != '.'
+      || w == 0 || h == 0 || w > 65536 || h > 65536)
+    {
+      snprintf (why, why_size, "%s: a raw exemplar is named NAME.WxH.f32", path);
+      return false;
+    }
+  n = w * h * TS_CHANNELS;
+  file = fopen (path, "rb");
+  if (!file || fseek (file, 0, SEEK_END) != 0 || (length = ftell (file)) < 0
+      || (size_t) length != n * sizeof (float) || fseek (file, 0, SEEK_SET) != 0
+      || !(image->pixels = malloc (n * sizeof (float)))
+      || fread (image->pixels, sizeof (float), n, file) != n)
+    {
+      snprintf (why, why_size, "%s: cannot read %zux%zu raw pixels", path, w, h);
+      free (image->pixels);
+      image->pixels = NULL;
+      if (file)
+        fclose (file);
+      return false;
+    }
+  fclose (file);
+  image->width = w;
+  image->height = h;
+  return true;
+}
+
+static bool
+is_raw (const char *path)
+{
+  size_t n = strlen (path);
+  return n > 4 && strcmp (path + n - 4, ".f32") == 0;
+}
+
+/* Writes `image` as DIR/NAME.WxH.f32 (NAME without its extension). */
+static bool
+save_raw (const char *dir, const char *name, const TsImage *image)
+{
+  char path[4096];
+  size_t n = image->width * image->height * TS_CHANNELS, stem = strcspn (name, ".");
+  FILE *file;
+  bool ok;
+
+  snprintf (path, sizeof path, "%s/%.*s.%zux%zu.f32", dir, (int) stem, name, image->width,
+            image->height);
+  file = fopen (path, "wb");
+  if (!file)
+    return false;
+  ok = fwrite (image->pixels, sizeof (float), n, file) == n;
+  return fclose (file) == 0 && ok;
+}
+
 static int
 compare_double (const void *a, const void *b)
 {
@@ -122,9 +190,10 @@ main (int argc, char **argv)
   size_t side = 256, crop = 0;
   int runs = 1, quality = 0, opt, failures = 0;
   uint32_t seed = 1;
-  bool tileable = false, per_stage = false, identity = false, source_map = false;
+  bool tileable = false, per_stage = false, identity = false, source_map = false, gegl = false;
+  const char *raw_dir = NULL;
 
-  while ((opt = getopt (argc, argv, "s:c:r:e:q:TpIm")) != -1)
+  while ((opt = getopt (argc, argv, "s:c:r:e:q:TpImw:")) != -1)
     switch (opt)
       {
       case 's': side = (size_t) strtoul (optarg, NULL, 10); break;
@@ -136,9 +205,10 @@ main (int argc, char **argv)
       case 'm': source_map = true; break;
       case 'p': per_stage = true; break;
       case 'I': identity = true; break;
+      case 'w': raw_dir = optarg; break;
       default:
         fprintf (stderr, "usage: %s [-s SIZE] [-c CROP] [-r RUNS] [-e SEED] [-q QUALITY] "
-                 "[-T] [-p] [-I] [-m] EXEMPLAR.png...\n", argv[0]);
+                 "[-T] [-p] [-I] [-m] [-w DIR] EXEMPLAR.png|EXEMPLAR.WxH.f32...\n", argv[0]);
         return 2;
       }
   if (optind >= argc || side == 0 || runs < 1 || runs > MAX_RUNS)
@@ -147,7 +217,10 @@ main (int argc, char **argv)
                argv[0], MAX_RUNS);
       return 2;
     }
-  ts_io_init ();
+  for (int a = optind; a < argc && !gegl; a++)
+    gegl = !is_raw (argv[a]);
+  if (gegl)
+    ts_io_init ();
 
   for (int a = optind; a < argc; a++)
     {
@@ -162,7 +235,8 @@ main (int argc, char **argv)
       float *preserve = NULL;
       const char *name = strrchr (argv[a], '/') ? strrchr (argv[a], '/') + 1 : argv[a];
 
-      if (!ts_io_load (argv[a], &exemplar, why, sizeof why))
+      if (is_raw (argv[a]) ? !load_raw (argv[a], &exemplar, why, sizeof why)
+                           : !ts_io_load (argv[a], &exemplar, why, sizeof why))
         {
           fprintf (stderr, "%s\n", why);
           failures++;
@@ -173,6 +247,11 @@ main (int argc, char **argv)
           printf ("%-14s skipped (smaller than %zux%zu)\n", name, crop, crop);
           free (exemplar.pixels);
           continue;
+        }
+      if (raw_dir && !save_raw (raw_dir, name, &exemplar))
+        {
+          fprintf (stderr, "%s: cannot write its raw copy into %s\n", name, raw_dir);
+          failures++;
         }
       ts_params_init (&params);
       params.output_width = params.output_height = side;
