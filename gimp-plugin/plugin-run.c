@@ -385,22 +385,19 @@ ts_plugin_render_layers (TsMaterialSet      *set,
   const TsExemplar *layers = set->exemplars;
   GeglBuffer **results = set->results;
   gint n_layers = set->n;
-  GeglRectangle rect = { 0, 0, args->width, args->height };
-  GeglBuffer *layout = gegl_buffer_new (&rect, babl_format_n (babl_type ("float"), 2));
+  GeglBuffer *layout = NULL;
   GeglNode *graph = gegl_node_new ();
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_SYNTHESIZE,
                                       "width", args->width, "height", args->height,
                                       "tileable", args->tileable, "quality", args->quality,
                                       "seed", args->seed, "source-map", TRUE, NULL);
-  GeglNode *watched[] = { op, NULL };
-  GeglNode *sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
-                                        "buffer", layout, NULL);
   GeglNode *layout_source;
 
   for (gint i = 0; i < n_layers; i++)
     g_clear_object (&results[i]);
-  gegl_node_link_many (ts_plugin_source_node (graph, layers[set->driver].buffer), op, sink, NULL);
-  ts_plugin_run_graph (sink, watched, 0.0, 0.9);
+  gegl_node_link (ts_plugin_source_node (graph, layers[set->driver].buffer), op);
+  ts_plugin_run_op (op, args->width, args->height, babl_format_n (babl_type ("float"), 2), 0.0,
+                    0.9, NULL, &layout, NULL);
   if (layout_is_empty (layout))
     {
       g_object_unref (graph);
@@ -424,13 +421,11 @@ ts_plugin_render_layers (TsMaterialSet      *set,
                                             "x", 0.0, "y", 0.0, "width", (gdouble) args->width,
                                             "height", (gdouble) args->height, NULL);
 
-      results[i] = gegl_buffer_new (&rect, gegl_buffer_get_format (layers[i].buffer));
-      sink = gegl_node_new_child (graph, "operation", "gegl:write-buffer",
-                                  "buffer", results[i], NULL);
-      gegl_node_link_many (ts_plugin_source_node (graph, layers[i].buffer), map, crop, sink, NULL);
+      gegl_node_link_many (ts_plugin_source_node (graph, layers[i].buffer), map, crop, NULL);
       ts_plugin_connect_pads (layout_source, map, "aux");
-      watched[0] = map;
-      ts_plugin_run_graph (sink, watched, 0.9 + 0.1 * i / n_layers, 0.9 + 0.1 * (i + 1) / n_layers);
+      ts_plugin_run_op (crop, args->width, args->height, gegl_buffer_get_format (layers[i].buffer),
+                        0.9 + 0.1 * i / n_layers, 0.9 + 0.1 * (i + 1) / n_layers, NULL,
+                        &results[i], NULL);
     }
   g_object_unref (graph);
   g_object_unref (layout);
