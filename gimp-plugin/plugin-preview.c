@@ -96,11 +96,11 @@ ts_preview_caption (TsPreviewKind kind)
     case TS_PREVIEW_HEAL_SELECTION:
       return _("The selection healed within a crop around it");
     case TS_PREVIEW_HEAL_TRANSPARENCY:
-      return _("The layer scaled down, its transparency healed");
+      return _("A small copy of the layer, its transparency healed");
     case TS_PREVIEW_UNCROP:
-      return _("The layer scaled down, its new border filled");
+      return _("A small copy of the layer, its new border filled");
     case TS_PREVIEW_TILEABLE:
-      return _("The layer scaled down, made seamless and repeated 2\303\2272");
+      return _("A small copy of the layer, made seamless and repeated 2\303\2272");
     case TS_PREVIEW_GUIDED:
       return _("The middle of the result, at the result's scale");
     }
