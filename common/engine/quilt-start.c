@@ -9,6 +9,7 @@
 #include <float.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* Patch side over the exemplar level's shorter side: large enough to
  * hold a few lattice periods of a near-regular exemplar, small enough
@@ -23,10 +24,24 @@
 
 typedef struct
 {
-  size_t patch, overlap, step;
+  size_t patch, overlap, step;   /* see layout_patches              */
   size_t cand_w, cand_h;   /* exemplar corners a whole patch fits at */
   size_t cols, rows;       /* patches across the output              */
 } Layout;
+
+/* The patch, overlap and step on an exemplar level (the rest of the
+ * layout is set where the output's size is known). */
+static void
+layout_patches (const TsImage *ex, Layout *g)
+{
+  size_t side = ex->width < ex->height ? ex->width : ex->height;
+
+  g->patch = side / TS_QUILT_PATCH_DIVISOR >= 3 ? side / TS_QUILT_PATCH_DIVISOR : side;
+  g->overlap = g->patch / TS_QUILT_OVERLAP_DIVISOR >= 1 ? g->patch / TS_QUILT_OVERLAP_DIVISOR : 1;
+  if (g->overlap >= g->patch)
+    g->overlap = g->patch - 1;   /* a 1-pixel patch has no overlap */
+  g->step = g->patch - g->overlap;
+}
 
 static size_t
 patches_along (size_t n, const Layout *g)
@@ -213,21 +228,17 @@ choose_corner (const TsLevelState *state, const Layout *g, Scratch *s, const int
   return (size_t) ts_random_below (r, ncand);
 }
 
-TsStatus
-ts_quilt_start (TsLevelState *state, uint32_t seed, uint32_t level)
+/* Lays the quilt over the whole of `state` (its sources). */
+static TsStatus
+quilt (TsLevelState *state, uint32_t seed, uint32_t level)
 {
   const TsImage *ex = state->exemplar;
-  size_t side = ex->width < ex->height ? ex->width : ex->height;
   Layout g;
   Scratch s = { 0 };
   int32_t *corner;
   TsStatus status = TS_OK;
 
-  g.patch = side / TS_QUILT_PATCH_DIVISOR >= 3 ? side / TS_QUILT_PATCH_DIVISOR : side;
-  g.overlap = g.patch / TS_QUILT_OVERLAP_DIVISOR >= 1 ? g.patch / TS_QUILT_OVERLAP_DIVISOR : 1;
-  if (g.overlap >= g.patch)
-    g.overlap = g.patch - 1;   /* a 1-pixel patch has no overlap */
-  g.step = g.patch - g.overlap;
+  layout_patches (ex, &g);
   g.cand_w = ex->width - g.patch + 1;
   g.cand_h = ex->height - g.patch + 1;
   g.cols = patches_along (state->width, &g);
@@ -272,16 +283,45 @@ ts_quilt_start (TsLevelState *state, uint32_t seed, uint32_t level)
         }
     }
 
-  /* Transparent exemplar pixels are never a start: a random opaque one. */
-  for (size_t p = 0; status == TS_OK && p < state->width * state->height; p++)
-    if (ex->pixels[(size_t) state->source[p] * TS_CHANNELS + 3] <= 0.0f)
-      state->source[p] = state->opaque[ts_random_below (ts_random (seed, level, 0, p, 5),
-                                                        state->opaque_count)];
   free (corner);
   free (s.error);
   free (s.cost);
   free (s.path);
   free (s.keep);
   free (s.usage);
+  return status;
+}
+
+/* The first row and column of patches are matched on one side only: an
+ * oriented texture then stacks one strip of the exemplar all down the
+ * column (or along the row), a visible repeat. So the quilt is laid from
+ * one patch step above and left of the output, and those are cut off. */
+TsStatus
+ts_quilt_start (TsLevelState *state, uint32_t seed, uint32_t level)
+{
+  const TsImage *ex = state->exemplar;
+  TsLevelState canvas = *state;
+  TsStatus status;
+  Layout g;
+  size_t margin;
+
+  layout_patches (ex, &g);
+  margin = g.step;
+  canvas.width = state->width + margin;
+  canvas.height = state->height + margin;
+  canvas.source = malloc (canvas.width * canvas.height * sizeof (int32_t));
+  if (!canvas.source)
+    return TS_ERROR_OUT_OF_MEMORY;
+  status = quilt (&canvas, seed, level);
+  for (size_t y = 0; status == TS_OK && y < state->height; y++)
+    memcpy (state->source + y * state->width, canvas.source + (y + margin) * canvas.width + margin,
+            state->width * sizeof (int32_t));
+  free (canvas.source);
+
+  /* Transparent exemplar pixels are never a start: a random opaque one. */
+  for (size_t p = 0; status == TS_OK && p < state->width * state->height; p++)
+    if (ex->pixels[(size_t) state->source[p] * TS_CHANNELS + 3] <= 0.0f)
+      state->source[p] = state->opaque[ts_random_below (ts_random (seed, level, 0, p, 5),
+                                                        state->opaque_count)];
   return status;
 }
