@@ -99,9 +99,10 @@ ts_schedule_level (const TsParams *params, size_t level, size_t levels,
 
   plan->k_level = k_for_level (params->quality, level);
   plan->k_use = plan->k_level;
-  /* Guided votes also weigh the guide: with fewer of them a style
-   * transfer follows its target less closely. */
-  bool dense = params->guides != NULL;
+  /* A style transfer's votes also weigh its lightness guide: with fewer
+   * of them it follows its target less closely. Labels, compared as
+   * equal or not, need no more votes than plain synthesis. */
+  bool dense = params->guides != NULL && params->guides->exemplar_guide == NULL;
 
   plan->passes = 0;
   set_pass (&plan->pass[plan->passes++], large, iterations, dense);
