@@ -64,7 +64,7 @@ def find_pattern(name):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__)
+    ap = argparse.ArgumentParser()
     ap.add_argument("-b", "--build", default="build")
     ap.add_argument("--size", type=int, default=256)
     ap.add_argument("--seeds", default="1,2,3")

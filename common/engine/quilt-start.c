@@ -24,7 +24,7 @@
 
 typedef struct
 {
-  size_t patch, overlap, step;   /* see layout_patches              */
+  size_t patch, overlap, step;   /* set by layout_patches           */
   size_t cand_w, cand_h;   /* exemplar corners a whole patch fits at */
   size_t cols, rows;       /* patches across the output              */
 } Layout;

@@ -100,8 +100,9 @@ ts_schedule_level (const TsParams *params, size_t level, size_t levels,
   plan->k_level = k_for_level (params->quality, level);
   plan->k_use = plan->k_level;
   /* A style transfer's votes also weigh its lightness guide: with fewer
-   * of them it follows its target less closely. Labels, compared as
-   * equal or not, need no more votes than plain synthesis. */
+   * of them it follows its target less closely. With an exemplar guide
+   * of its own (texture by numbers) the sparser grid kept label fidelity
+   * and per-region quality (docs/benchmarks.md, guided synthesis). */
   bool dense = params->guides != NULL && params->guides->exemplar_guide == NULL;
 
   plan->passes = 0;
