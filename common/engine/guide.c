@@ -356,6 +356,19 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
       out->bin_scale = guides->bin_high > guides->bin_low
                          ? (float) out->bins / (guides->bin_high - guides->bin_low) : 0.0f;
     }
+  if (!guides->labels)
+    {
+      size_t ch = out->channels;
+      out->packed = malloc ((n ? n : 1) * ch * sizeof (float));
+      if (!out->packed)
+        {
+          ts_guide_level_free (out);
+          return TS_ERROR_OUT_OF_MEMORY;
+        }
+      for (size_t i = 0; i < n; i++)
+        memcpy (out->packed + i * ch, out->exemplar->value.pixels + i * TS_CHANNELS,
+                ch * sizeof (float));
+    }
   out->bin_start = calloc (out->bins + 1, sizeof (size_t));
   out->bin_nearest = malloc (out->bins * sizeof (size_t));
   count = calloc (out->bins, sizeof (size_t));
@@ -435,6 +448,7 @@ ts_guide_level_free (TsGuideLevel *level)
   free (level->bin_start);
   free (level->bin_member);
   free (level->bin_nearest);
+  free (level->packed);
   memset (level, 0, sizeof *level);
 }
 
@@ -480,7 +494,7 @@ ts_guide_query_init (TsGuideQuery *q, const TsGuideLevel *level, size_t patch)
   if (level->labels)
     q->labels = malloc (patch * patch);
   else
-    q->values = malloc (patch * patch * TS_CHANNELS * sizeof (float));
+    q->values = malloc (patch * patch * level->channels * sizeof (float));
   return q->labels || q->values ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
 }
 
@@ -509,8 +523,8 @@ ts_guide_query_gather (TsGuideQuery *q, ptrdiff_t cx, ptrdiff_t cy, bool wrap_x,
           if (q->labels)
             q->labels[i] = t->label[y * t->width + x];
           else
-            memcpy (q->values + i * TS_CHANNELS, ts_image_pixel (&t->value, x, y),
-                    TS_CHANNELS * sizeof (float));
+            memcpy (q->values + i * q->level->channels, ts_image_pixel (&t->value, x, y),
+                    q->level->channels * sizeof (float));
         }
     }
 }
