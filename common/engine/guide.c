@@ -215,6 +215,7 @@ ts_guide_pyramid_build (const TsParams *params, const TsImage *exemplar,
 
   memset (guides, 0, sizeof *guides);
   guides->labels = ts_guides_use_labels (params, exemplar);
+  guides->style = !g->exemplar_guide;
   guides->weight = g->weight;
   guides->channels = g->channels;
   guides->exemplar = calloc (pyramid->levels, sizeof (TsGuidePlane));
@@ -332,6 +333,7 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
   out->exemplar = &guides->exemplar[level];
   out->target = &guides->target[level];
   out->labels = guides->labels;
+  out->proposals = guides->style && level == 0 ? TS_STYLE_FINEST_PROPOSALS : TS_GUIDE_PROPOSALS;
   out->channels = guides->channels;
   /* A disagreeing guide pixel costs `weight` times the expected squared
    * difference of two unrelated texture pixels (twice the variance);
@@ -350,7 +352,10 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
       out->cost = (float) (guides->weight * colour_var / guide_var);
       /* A difference as large as two unrelated guide values' costs what
        * a disagreeing label does. */
-      out->vote_scale = (float) (TS_GUIDE_VOTE_SHARPNESS * guides->weight / (2.0 * guide_var));
+      out->vote_scale = (float) ((guides->style ? TS_STYLE_VOTE_SHARPNESS : TS_GUIDE_VOTE_SHARPNESS)
+                                 * guides->weight / (2.0 * guide_var));
+      if (guides->style)
+        out->cost *= (float) (level == 0 ? TS_STYLE_FINEST_WEIGHT : TS_STYLE_COARSE_WEIGHT);
       out->bins = TS_GUIDE_VALUE_BINS;
       out->bin_low = guides->bin_low;
       out->bin_scale = guides->bin_high > guides->bin_low

@@ -22,10 +22,29 @@
 #define TS_GUIDE_PROPOSALS 4
 /* Style transfer's guides are lightness blurred by a Gaussian of this
  * many pixels: details below it (a texture's grain) are left to the
- * exemplar. Chosen on bark, granite1, rock and wood1 restyling land1:
+ * exemplar. Chosen on bark, granite1, rock and wood1 restyling land1
+ * (192², seed 1, benchmarks/style-transfer.sh; then with the guide alike
+ * at every level and a denser grid):
  * blurred-lightness correlation 0.94-0.96 and sharpness 0.61-0.93 at 4,
  * against 0.98-0.99 and 0.49-0.87 at 2, 0.85-0.91 and 0.61-0.96 at 6. */
 #define TS_STYLE_GUIDE_BLUR 4.0
+/* A style transfer's guide weighs this much of its weight at the
+ * finest level, and TS_STYLE_COARSE_WEIGHT times it at the coarser
+ * ones, and its votes fall off twice as sharply with the tone
+ * (TS_STYLE_VOTE_SHARPNESS): the coarser levels lay out the tones, the
+ * votes keep them, and at the finest level a strong guide picks the
+ * grain by its tone, leaving out the grain that darkens or lightens its
+ * surroundings (a rock's joints, a granite's veins). Chosen on the
+ * tuning half below at plain synthesis's neighbourhood spacing: blurred
+ * lightness correlation within 0.003 and sharpness higher on every one
+ * (0.63-0.96 from 0.61-0.93), against the guide alike at every level. */
+#define TS_STYLE_FINEST_WEIGHT 0.25
+#define TS_STYLE_COARSE_WEIGHT 2.0
+#define TS_STYLE_VOTE_SHARPNESS (2.0 * TS_GUIDE_VOTE_SHARPNESS)
+/* At the finest level a style transfer proposes only this many exemplar
+ * pixels of the right tone per neighbourhood: its coarser levels have
+ * placed the tones, and the coherent candidates carry them. */
+#define TS_STYLE_FINEST_PROPOSALS 1
 /* In the E-step a vote whose guide disagrees with the pixel's counts
  * exp(-TS_GUIDE_VOTE_SHARPNESS * weight) as much as one that agrees (2 %
  * at weight 1): thin parts of the target that most neighbourhoods around
@@ -46,6 +65,7 @@ typedef struct
 typedef struct
 {
   bool          labels;
+  bool          style;     /* style transfer: both guides blurred lightness */
   size_t        channels;  /* of a value guide */
   size_t        label_count;
   double        weight;
@@ -70,6 +90,8 @@ typedef struct
   size_t  *bin_nearest; /* for each bin, the nearest bin with members    */
   float    vote_mismatch; /* labels: factor of a disagreeing vote          */
   float    vote_scale;    /* values: exp(-vote_scale * d^2) is the factor    */
+  size_t   proposals;     /* exemplar pixels of the right guide proposed
+                             per neighbourhood                            */
   float   *packed;        /* values: the exemplar guide's `channels` floats
                              per pixel and nothing else, for the cost      */
 } TsGuideLevel;

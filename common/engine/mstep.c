@@ -191,8 +191,8 @@ search_centre (TsSearch *s, uint32_t *proposed, const Proposals *p, const TsLeve
     }
 }
 
-/* A few random exemplar pixels whose guide matches the target's at the
- * centre, and their k-coherence candidates. */
+/* A few random exemplar pixels (g->proposals) whose guide matches the
+ * target's at the centre, and their k-coherence candidates. */
 static void
 propose_by_guide (TsSearch *s, const Proposals *p, const TsLevelState *state,
                   uint32_t seed_stream, ptrdiff_t cx, ptrdiff_t cy, size_t centre_index)
@@ -201,7 +201,7 @@ propose_by_guide (TsSearch *s, const Proposals *p, const TsLevelState *state,
   size_t bin = ts_guide_target_bin (g, (size_t) cx, (size_t) cy);
   size_t first = g->bin_start[bin], members = g->bin_start[bin + 1] - first;
 
-  for (uint32_t i = 0; i < TS_GUIDE_PROPOSALS; i++)
+  for (uint32_t i = 0; i < (uint32_t) g->proposals; i++)
     {
       uint64_t r = ts_random (seed_stream, 0, i, centre_index, 8);
       propose (s, p, g->bin_member[first + ts_random_below (r, members)], 0, 0);

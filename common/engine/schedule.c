@@ -61,14 +61,14 @@ fit_patch (size_t want, size_t ex_w, size_t ex_h)
   return want < 1 ? 1 : want;
 }
 
-/* `dense`: a quarter rounded down rather than to the nearest. */
 static void
-set_pass (TsPass *pass, size_t patch, size_t iterations, bool dense)
+set_pass (TsPass *pass, size_t patch, size_t iterations)
 {
   pass->patch = patch;
-  /* A quarter of the neighbourhood (Kwatra et al.), but never every
-   * pixel: 2 is as good and four times cheaper. */
-  size_t quarter = dense ? patch / 4 : (patch + 2) / 4;
+  /* A quarter of the neighbourhood (Kwatra et al.), rounded to the
+   * nearest, but never every pixel: 2 is as good and four times
+   * cheaper. */
+  size_t quarter = (patch + 2) / 4;
   pass->spacing = quarter > 2 ? quarter : (patch >= 3 ? 2 : 1);
   pass->max_iterations = iterations;
   pass->propose_step = patch >= 7 ? 2 : 1;
@@ -99,14 +99,8 @@ ts_schedule_level (const TsParams *params, size_t level, size_t levels,
 
   plan->k_level = k_for_level (params->quality, level);
   plan->k_use = plan->k_level;
-  /* A style transfer's votes also weigh its lightness guide: with fewer
-   * of them it follows its target less closely. With an exemplar guide
-   * of its own (texture by numbers) the sparser grid kept label fidelity
-   * and per-region quality (docs/benchmarks.md, guided synthesis). */
-  bool dense = params->guides != NULL && params->guides->exemplar_guide == NULL;
-
   plan->passes = 0;
-  set_pass (&plan->pass[plan->passes++], large, iterations, dense);
+  set_pass (&plan->pass[plan->passes++], large, iterations);
   if (small < large)
-    set_pass (&plan->pass[plan->passes++], small, iterations, dense);
+    set_pass (&plan->pass[plan->passes++], small, iterations);
 }
