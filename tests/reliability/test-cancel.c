@@ -1,14 +1,15 @@
 /* Cancel: another thread asks the progress callback to stop at several
  * points of a 2D synthesis (default 1024x1024) and of a solid one
- * (default 128^3; also with the cell structure, early), and inside the
- * exemplar matching of both from a large
- * exemplar (default 512x512: MRPM's candidate sets in 2D, the index of
- * all neighbourhoods in the solid engine);
+ * (default 64^3; also with the cell structure, early), once in the finest
+ * level of a solid of the engine's default size (128^3), and inside the
+ * exemplar matching of both from a large exemplar (default 512x512:
+ * MRPM's candidate sets in 2D, the index of all neighbourhoods in the
+ * solid engine);
  * the engine must return TS_ERROR_CANCELLED within a bound, leave a 2D
  * output untouched, leave a volume either untouched or wholly written
- * (see check_volume) and free everything (the leak check is ASan's or
+ * (see check_output) and free everything (the leak check is ASan's or
  * valgrind's, see scripts/sanitize.sh). Prints the measured latencies.
- * Usage: test-cancel [SIDE [SOLID_SIZE [LARGE_EXEMPLAR [BOUND_S]]]]
+ * Usage: test-cancel [SIDE [SOLID_SIZE [LARGE_EXEMPLAR [BOUND_S [LARGE_SOLID]]]]]
  * (smaller, with a longer bound, under valgrind)
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "test-util.h"
@@ -27,16 +28,23 @@
  * check that a cancel frees everything. Their large exemplar is 256:
  * the solid engine's exemplar matching (indexing all neighbourhoods) of
  * a 200x200 one ends within one 0.05 s report interval natively, so
- * would never be cancelled midway. */
+ * would never be cancelled midway.
+ * The solid's points are spread over a 64^3 volume: its levels and passes
+ * are those of a 128^3 one for an eighth of the work (the spread's last
+ * point alone is most of a run). A step's work between two asks of the
+ * callback grows with the volume: one point is in the finest level of a
+ * volume of the engine's default size, where steps are largest. */
 #ifdef TEST_SANITIZED
 #define DEFAULT_BOUND_S 10.0
 #define DEFAULT_SIDE 256
 #define DEFAULT_SOLID_SIZE 32
+#define DEFAULT_LARGE_SOLID 40
 #define DEFAULT_LARGE_EXEMPLAR 256
 #else
 #define DEFAULT_BOUND_S 1.0
 #define DEFAULT_SIDE 1024
-#define DEFAULT_SOLID_SIZE 128
+#define DEFAULT_SOLID_SIZE 64
+#define DEFAULT_LARGE_SOLID 128
 #define DEFAULT_LARGE_EXEMPLAR 512
 #endif
 
@@ -120,7 +128,8 @@ typedef struct
   const TsImage *ex;
   TsParams      params;      /* 2D */
   TsSolidParams solid;       /* solid, when `is_solid` */
-  bool          is_solid;    /* written in place: see check_volume */
+  bool          is_solid;    /* written in place: see check_output */
+  bool          finest;      /* every cancel must come in the finest level */
   float        *out;
   size_t        bytes;
 } Job;
@@ -175,6 +184,9 @@ check_output (const Job *job, const char *when)
   CHECK (untouched == floats || (untouched == 0 && not_finite == 0),
          "%s, cancel %s: the volume is untouched or wholly written (%zu of %zu floats untouched, "
          "%zu not finite)", job->name, when, untouched, floats, not_finite);
+  CHECK (!job->finest || untouched == 0,
+         "%s, cancel %s: in the finest level, as meant (an earlier point than the finest "
+         "level's start: move the point)", job->name, when);
   printf ("%s, cancel %s: volume %s\n", job->name, when,
           untouched == floats ? "untouched (cancelled in a coarser level)"
                               : "wholly written (cancelled in the finest level)");
@@ -311,19 +323,24 @@ main (int argc, char **argv)
   /* The cell structure's own stretches (the exemplar's distances, each
    * level's tessellation) come first: the early points reach them. */
   static const int early[] = { 1, 300 };
+  /* The finest level of a 128^3 volume starts at about 14 % of the work. */
+  static const int finest[] = { 300 };
   size_t side = argc > 1 ? (size_t) strtoul (argv[1], NULL, 10) : DEFAULT_SIDE;
   size_t solid = argc > 2 ? (size_t) strtoul (argv[2], NULL, 10) : DEFAULT_SOLID_SIZE;
   size_t large = argc > 3 ? (size_t) strtoul (argv[3], NULL, 10) : DEFAULT_LARGE_EXEMPLAR;
   double bound = argc > 4 ? strtod (argv[4], NULL) : DEFAULT_BOUND_S;
-  char name[5][48];
+  size_t large_solid = argc > 5 ? (size_t) strtoul (argv[5], NULL, 10) : DEFAULT_LARGE_SOLID;
+  char name[6][48];
   TsImage ex, big;
   Job job;
 
   if (side < 16 || side > 4096 || solid < TS_SOLID_MIN_SIZE || solid > 256 || large < 64
-      || large > 2048 || !(bound > 0.0 && bound <= 60.0))
+      || large > 2048 || !(bound > 0.0 && bound <= 60.0) || large_solid < TS_SOLID_MIN_SIZE
+      || large_solid > 256)
     {
       fprintf (stderr, "usage: test-cancel [SIDE 16..4096 [SOLID_SIZE %d..256 "
-               "[LARGE_EXEMPLAR 64..2048 [BOUND_S 0..60]]]]\n", TS_SOLID_MIN_SIZE);
+               "[LARGE_EXEMPLAR 64..2048 [BOUND_S 0..60 [LARGE_SOLID %d..256]]]]]\n",
+               TS_SOLID_MIN_SIZE, TS_SOLID_MIN_SIZE);
       return 2;
     }
   test_load_exemplar ("bark.png", &ex);
@@ -340,6 +357,11 @@ main (int argc, char **argv)
   job_solid (&job, name[4], &ex, solid);
   job.solid.cell_structure = TS_CELL_STRUCTURE_ON;
   run_cancels (&job, early, sizeof early / sizeof early[0], bound);
+
+  snprintf (name[5], sizeof name[5], "solid %zu^3", large_solid);
+  job_solid (&job, name[5], &ex, large_solid);
+  job.finest = true;
+  run_cancels (&job, finest, sizeof finest / sizeof finest[0], bound);
 
   CHECK (mirror_tile (&ex, large, &big), "large exemplar allocation");
   if (big.pixels)
