@@ -21,6 +21,24 @@ PREFIX = OP + ": "
 _failures = []
 
 
+def _own_babl_cache():
+    """babl caches, per user, the conversions every process has used and
+    sets all of them up at each start; one from 8 bits among them makes
+    babl 0.1.98 time its lookup tables in every process (a 256 MiB buffer,
+    about a second of CPU), which the tests, starting hundreds of GEGL
+    processes, would pay in each. Each test script keeps a cache of its
+    own in the build folder, so its processes still share their choice of
+    paths; its child processes keep what it gives them."""
+    build = os.environ.get("TEXSYNTH_BUILD_ROOT")
+    if build and "TEXSYNTH_TEST_CACHE" not in os.environ:
+        name = os.path.splitext(os.path.basename(sys.argv[0]))[0]
+        os.environ["TEXSYNTH_TEST_CACHE"] = os.path.join(build, "test-caches", name)
+        os.environ["XDG_CACHE_HOME"] = os.environ["TEXSYNTH_TEST_CACHE"]
+
+
+_own_babl_cache()
+
+
 def note(message):
     print(message, flush=True)
 
