@@ -22,6 +22,44 @@ def quote(text):
     return '"%s"' % text.replace("\\", "\\\\").replace('"', '\\"')
 
 
+def _plugin_cache_path(version):
+    """Where the tests of a build keep GIMP's registrations of the installed
+    plug-ins: each test's fresh profile would otherwise make GIMP query
+    every one of them (over a hundred processes, several seconds of CPU).
+    The plug-in under test is left out, so each profile still queries it."""
+    build = os.environ.get("TEXSYNTH_BUILD_ROOT")
+    return os.path.join(build, "test-caches", "gimp%d-pluginrc" % version) if build else None
+
+
+def _top_level_forms(text):
+    """The top-level parenthesised forms of a pluginrc, as text (comments
+    and what lies between forms dropped)."""
+    forms, depth, start, in_string, escaped, in_comment = [], 0, 0, False, False, False
+    for i, c in enumerate(text):
+        if in_comment:
+            in_comment = c != "\n"
+        elif in_string:
+            if escaped:
+                escaped = False
+            elif c == "\\":
+                escaped = True
+            elif c == '"':
+                in_string = False
+        elif c == '"':
+            in_string = True
+        elif c == "#" and depth == 0:
+            in_comment = True
+        elif c == "(":
+            if depth == 0:
+                start = i
+            depth += 1
+        elif c == ")" and depth > 0:
+            depth -= 1
+            if depth == 0:
+                forms.append(text[start:i + 1])
+    return forms
+
+
 class ScriptFu2:
     """GIMP 2.10's Script-Fu: drawables by ID, results wrapped in lists."""
 
@@ -152,6 +190,9 @@ class Gimp:
             os.makedirs(os.path.join(self.profile, folder), exist_ok=True)
         self.home = os.path.join(work, "home")
         os.makedirs(self.home)
+        self.plugin_cache = _plugin_cache_path(self.version)
+        if self.plugin_cache and os.path.isfile(self.plugin_cache):
+            shutil.copy(self.plugin_cache, os.path.join(self.profile, "pluginrc"))
 
     def env(self):
         env = dict(os.environ)
@@ -182,7 +223,27 @@ class Gimp:
         except subprocess.TimeoutExpired:
             tsops.die("GIMP did not finish within %d s" % timeout)
         tsops.note("---- GIMP output ----\n%s---- end of GIMP output ----" % proc.stdout)
+        self._keep_system_plugins()
         return proc.returncode, proc.stdout, ""
+
+    def _keep_system_plugins(self):
+        """Stores the installed plug-ins' registrations from this profile's
+        pluginrc for the next test's profile, once per build."""
+        pluginrc = os.path.join(self.profile, "pluginrc")
+        if not self.plugin_cache or os.path.isfile(self.plugin_cache) or not os.path.isfile(pluginrc):
+            return
+        with open(pluginrc, encoding="latin-1") as f:
+            forms = _top_level_forms(f.read())
+        system = [form for form in forms
+                  if not form.startswith("(plug-in-def") or '"${gimp_plug_in_dir}/' in form.split("\n")[0]]
+        # The plug-in under test must be queried in every profile.
+        if any(form.startswith("(plug-in-def") for form in system) and \
+           not any("texsynth" in form for form in system):
+            os.makedirs(os.path.dirname(self.plugin_cache), exist_ok=True)
+            partial = "%s.%d" % (self.plugin_cache, os.getpid())
+            with open(partial, "w", encoding="latin-1") as f:
+                f.write("\n".join(system) + "\n")
+            os.replace(partial, self.plugin_cache)
 
     @staticmethod
     def error_text(lines, tag):
