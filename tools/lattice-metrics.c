@@ -3,7 +3,7 @@
  * lattice-metrics.h).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "lattice-metrics.h"
-#include "fft.h"
+#include "engine/fft.h"
 
 #include <math.h>
 #include <stdint.h>

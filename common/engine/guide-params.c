@@ -165,8 +165,13 @@ ts_guides_estimate_bytes (const TsParams *params, const TsImage *exemplar)
   double ex = (double) exemplar->width * (double) exemplar->height;
   double out = (double) params->output_width * (double) params->output_height;
 
-  if (!params->guides)
+  if (!params->guides && params->initial_source)
     return 0.0;
+  if (!params->guides)
+    /* A lattice guide, if the exemplar has one (lattice.h): value planes
+     * of every level but the finest, the exemplar grouped by phase, and
+     * the estimate's FFT of at most 1024x1024 complex doubles. */
+    return (ex + out) * 16.0 / 3.0 + ex * 4.0 + fmin (4.0 * ex, 1024.0 * 1024.0) * 16.0;
   /* Value pyramids of both guides (labels take less), the exemplar's
    * pixels grouped by bin, and a level's builder copy. */
   return (ex + out) * 16.0 * 4.0 / 3.0 + ex * 4.0 + (ex + out) * 16.0;

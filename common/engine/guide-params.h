@@ -5,7 +5,8 @@
 
 #include "texsynth.h"
 
-/* Bytes of the guides of a synthesis (0 without guides). */
+/* Bytes of the guides of a synthesis: the caller's, or the lattice guide
+ * a plain synthesis may build. */
 double   ts_guides_estimate_bytes (const TsParams *params, const TsImage *exemplar);
 /* Checks params->guides, if any, against the output and the exemplar. */
 TsStatus ts_guides_validate (const TsParams *params, const TsImage *exemplar, TsError *error);

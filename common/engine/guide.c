@@ -258,11 +258,29 @@ ts_guide_pyramid_free (TsGuidePyramid *guides)
   memset (guides, 0, sizeof *guides);
 }
 
+/* A lattice guide's bin is its phase cell: each period's phase (a
+ * cosine and sine pair) cut into TS_LATTICE_PHASE_BINS steps. */
+static size_t
+bin_of_phases (const TsGuideLevel *g, const float *v)
+{
+  size_t bin = 0;
+
+  for (size_t k = 0; 2 * k < g->channels; k++)
+    {
+      float turn = atan2f (v[2 * k + 1], v[2 * k]) / 6.2831853f + 0.5f;
+      size_t step = (size_t) (turn * (float) TS_LATTICE_PHASE_BINS);
+      bin = bin * TS_LATTICE_PHASE_BINS + (step < TS_LATTICE_PHASE_BINS ? step : 0);
+    }
+  return bin;
+}
+
 static size_t
 bin_of_values (const TsGuideLevel *g, const float *v)
 {
   float key = 0.0f, bin;
 
+  if (g->lattice)
+    return bin_of_phases (g, v);
   for (size_t c = 0; c < g->channels; c++)
     key += v[c];
   bin = (key / (float) g->channels - g->bin_low) * g->bin_scale;
@@ -307,12 +325,12 @@ colour_variance (const TsImage *ex)
   return var / n;
 }
 
-/* Summed variance of the value guide's channels over `ex`'s opaque pixels. */
+/* Summed variance of the value guide's `channels` over `ex`'s opaque pixels. */
 static double
-guide_variance (const TsImage *guide, const TsImage *ex)
+guide_variance (const TsImage *guide, size_t channels, const TsImage *ex)
 {
   double var = 0.0;
-  for (size_t c = 0; c < TS_CHANNELS - 1; c++)
+  for (size_t c = 0; c < channels; c++)
     {
       double mean, sd;
       spread (guide->pixels + c, TS_CHANNELS, ts_image_pixel_count (guide), ex->pixels + 3, &mean,
@@ -333,7 +351,9 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
   out->exemplar = &guides->exemplar[level];
   out->target = &guides->target[level];
   out->labels = guides->labels;
-  out->proposals = guides->style && level == 0 ? TS_STYLE_FINEST_PROPOSALS : TS_GUIDE_PROPOSALS;
+  out->lattice = guides->lattice;
+  out->proposals = guides->lattice ? TS_LATTICE_PROPOSALS
+                  : guides->style && level == 0 ? TS_STYLE_FINEST_PROPOSALS : TS_GUIDE_PROPOSALS;
   out->channels = guides->channels;
   /* A disagreeing guide pixel costs `weight` times the expected squared
    * difference of two unrelated texture pixels (twice the variance);
@@ -347,7 +367,7 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
     }
   else
     {
-      double guide_var = guide_variance (&out->exemplar->value, ex);
+      double guide_var = guide_variance (&out->exemplar->value, out->channels, ex);
       guide_var = guide_var > TS_GUIDE_MIN_SPREAD ? guide_var : TS_GUIDE_MIN_SPREAD;
       out->cost = (float) (guides->weight * colour_var / guide_var);
       /* A difference as large as two unrelated guide values' costs what
@@ -357,6 +377,9 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
       if (guides->style)
         out->cost *= (float) (level == 0 ? TS_STYLE_FINEST_WEIGHT : TS_STYLE_COARSE_WEIGHT);
       out->bins = TS_GUIDE_VALUE_BINS;
+      if (out->lattice)
+        out->bins = out->channels == 4 ? TS_LATTICE_PHASE_BINS * TS_LATTICE_PHASE_BINS
+                                       : TS_LATTICE_PHASE_BINS;
       out->bin_low = guides->bin_low;
       out->bin_scale = guides->bin_high > guides->bin_low
                          ? (float) out->bins / (guides->bin_high - guides->bin_low) : 0.0f;

@@ -20,6 +20,14 @@
  * top of the k-coherence candidates: they let a region far from any
  * neighbour of its label still find that label's texture. */
 #define TS_GUIDE_PROPOSALS 4
+/* A lattice guide groups the exemplar by phase cell, this many steps
+ * per period: a step of a sixth of a period is well within what the
+ * neighbourhoods' own match corrects. */
+#define TS_LATTICE_PHASE_BINS 6
+/* Every pixel of a phase cell continues the lattice: one proposal per
+ * neighbourhood finds the right phase as well as four (and costs a
+ * quarter as much). */
+#define TS_LATTICE_PROPOSALS 1
 /* Style transfer's guides are lightness blurred by a Gaussian of this
  * many pixels: details below it (a texture's grain) are left to the
  * exemplar. Chosen on bark, granite1, rock and wood1 restyling land1
@@ -66,7 +74,9 @@ typedef struct
 {
   bool          labels;
   bool          style;     /* style transfer: both guides blurred lightness */
-  size_t        channels;  /* of a value guide */
+  bool          lattice;   /* the exemplar's own lattice (lattice-guide.c),
+                              not a layout the caller gave             */
+  size_t        channels;  /* of a value guide, up to TS_CHANNELS */
   size_t        label_count;
   double        weight;
   size_t        levels;
@@ -81,6 +91,7 @@ typedef struct
 {
   const TsGuidePlane *exemplar, *target;
   bool     labels;
+  bool     lattice;     /* see TsGuidePyramid */
   size_t   channels;    /* of a value guide */
   float    cost;        /* per disagreeing label, or per squared value unit */
   size_t   bins;

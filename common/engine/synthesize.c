@@ -1,6 +1,7 @@
 /* Coarse-to-fine texture optimization driver (Kwatra et al. 2005 with
  * k-coherence search over MRPM candidate sets).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "lattice.h"
 #include "level.h"
 #include "occurrence.h"
 #include "quilt-start.h"
@@ -139,7 +140,7 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
 {
   const TsImage *ex = state->exemplar;
 
-  if (!coarser && state->guide)
+  if (!coarser && state->guide && !state->guide->lattice)
     ts_guide_start_blocks (state->guide, ex, state->source, state->width, state->height,
                            params->seed, level, block);
   else if (!coarser && !state->preserve_source)
@@ -417,7 +418,8 @@ synthesize_level (Run *run, Work *w, size_t level)
   state->wrap_x = params->wrap_x;
   state->wrap_y = params->wrap_y;
   state->cancel = &run->cancel;
-  if (w->guides.levels)
+  /* A lattice guide leaves some levels free (lattice-guide.c). */
+  if (w->guides.levels && (w->guides.labels || w->guides.exemplar[level].value.pixels))
     {
       if ((status = ts_guide_level_init (&w->guides, level, ex, &w->guide_level)) != TS_OK)
         return status;
@@ -522,6 +524,16 @@ ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
     status = ts_pyramid_build (&w.working, ts_schedule_levels (exemplar), &w.pyramid);
   if (status == TS_OK && params->guides)
     status = ts_guide_pyramid_build (params, exemplar, &w.pyramid, &w.guides);
+  else if (status == TS_OK && !params->initial_source)
+    {
+      /* A near-regular exemplar guides the synthesis by its own lattice. */
+      TsLatticeEstimate lattice;
+      status = ts_lattice_estimate (&w.pyramid, &lattice);
+      if (status == TS_OK)
+        status = ts_lattice_guide_build (&lattice, &w.pyramid, params->output_width,
+                                         params->output_height, params->wrap_x, params->wrap_y,
+                                         &w.guides);
+    }
   if (status == TS_OK)
     {
       run.progress.total = planned_work (params, &w.pyramid);

@@ -4,7 +4,7 @@
  * degrees, noise (not near-regular), and the autocorrelation through the
  * FFT against the sum it stands for.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
-#include "fft.h"
+#include "engine/fft.h"
 #include "lattice-metrics.h"
 #include "engine/rng.h"
 #include "test-util.h"

@@ -1,6 +1,7 @@
 /* A small complex FFT on power-of-two sizes (iterative radix-2), in one
- * and two dimensions, for the measures that need correlations over many
- * offsets (lattice-metrics.c). Pure C11, no GEGL.
+ * and two dimensions, for correlations over many offsets: the engine's
+ * lattice estimate (lattice.c) and the lattice measure
+ * (tools/lattice-metrics.c). Pure C11, no GEGL.
  * SPDX-License-Identifier: LGPL-3.0-or-later
  *
  * Forward: X[k] = sum_n x[n] exp(-2 pi i n k / N). Inverse: the same with
