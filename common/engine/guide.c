@@ -542,6 +542,14 @@ ts_guide_query_gather (TsGuideQuery *q, ptrdiff_t cx, ptrdiff_t cy, bool wrap_x,
   ptrdiff_t r = (ptrdiff_t) q->radius;
   size_t i = 0;
 
+  if (q->level->lattice)
+    {
+      /* ts_guide_cost reads a lattice guide's centre alone */
+      memcpy (q->values + (q->radius * q->patch + q->radius) * q->level->channels,
+              ts_image_pixel (&t->value, (size_t) cx, (size_t) cy),
+              q->level->channels * sizeof (float));
+      return;
+    }
   for (ptrdiff_t dy = -r; dy <= r; dy++)
     {
       size_t y = ts_border_index (cy + dy, t->height, wrap_y);

@@ -184,6 +184,16 @@ ts_guide_cost (const TsGuideQuery *q, size_t qx, size_t qy, float bound)
         }
       return sum;
     }
+  if (g->lattice)
+    {
+      /* Phases grow alike over the target and the exemplar, so their
+       * difference is the same at every pixel of the neighbourhood: the
+       * centre's, p^2 times. */
+      size_t centre = q->radius * p + q->radius;
+      return g->cost * (float) (p * p) *
+             ts_guide_floats_ssd (q->values + centre * g->channels,
+                                  g->packed + (qy * w + qx) * g->channels, g->channels);
+    }
   size_t row_floats = p * g->channels;
   const float *t = q->values, *e = g->packed + (y0 * w + x0) * g->channels;
   for (size_t row = 0; row < p; row++, t += row_floats, e += w * g->channels)
