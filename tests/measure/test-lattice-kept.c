@@ -3,6 +3,8 @@
  * per-element shades and noise, grown to 256x256 with three seeds; the
  * lattice measure (tools/lattice-metrics.c) of every result must stay
  * near 1. Optimization from a random start kept about 0.3 of either.
+ * Tileable results, measured with their wrap-around seams moved to the
+ * middle, must keep most of it.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "lattice-metrics.h"
 #include "engine/rng.h"
@@ -11,12 +13,17 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define EXEMPLAR_SIDE 128
 #define RESULT_SIDE 256
 /* Well above what a lost lattice gives (about 0.3 here) and below the
  * 0.90 the worst seed keeps. */
 #define MIN_LATTICE_KEPT 0.8
+/* A tileable result holds a whole number of periods, so a lattice that
+ * does not divide its size is bent or broken somewhere: well above a
+ * lost lattice still, and below the 0.68 the worst seed keeps. */
+#define MIN_LATTICE_KEPT_TILEABLE 0.6
 
 typedef struct
 {
@@ -92,19 +99,40 @@ draw (TsImage *image, Lab (*pixel) (double, double, const double *, const double
   free (shade);
 }
 
+/* `image` moved by half its size each way (wrapping): a tileable
+ * result's wrap-around seams come to its middle. */
 static void
-check_kept (const char *name, const TsImage *exemplar)
+roll_half (TsImage *image, float *scratch)
+{
+  size_t w = image->width, h = image->height;
+  for (size_t y = 0; y < h; y++)
+    for (size_t x = 0; x < w; x++)
+      memcpy (scratch + (((y + h / 2) % h) * w + (x + w / 2) % w) * TS_CHANNELS,
+              image->pixels + (y * w + x) * TS_CHANNELS, TS_CHANNELS * sizeof (float));
+  memcpy (image->pixels, scratch, w * h * TS_CHANNELS * sizeof (float));
+}
+
+/* Seeds 1-3 (1 on small runs); a tileable result is measured with its
+ * wrap-around seams in the middle, so the lattice must continue across
+ * them too. */
+static void
+check_kept (const char *name, const TsImage *exemplar, bool tileable)
 {
   TsLattice lattice;
   TsImage out = { RESULT_SIDE, RESULT_SIDE, NULL };
+  float *scratch = malloc (RESULT_SIDE * RESULT_SIDE * TS_CHANNELS * sizeof (float));
 
   CHECK (ts_lattice_exemplar (exemplar, &lattice) == TS_MEASURE_OK, "%s: exemplar measured", name);
   CHECK (ts_lattice_near_regular (&lattice), "%s: near-regular (strength %.2f)", name,
          lattice.strength);
   out.pixels = malloc (RESULT_SIDE * RESULT_SIDE * TS_CHANNELS * sizeof (float));
-  CHECK (out.pixels != NULL, "out of memory");
-  if (!out.pixels)
-    return;
+  CHECK (out.pixels != NULL && scratch != NULL, "out of memory");
+  if (!out.pixels || !scratch)
+    {
+      free (out.pixels);
+      free (scratch);
+      return;
+    }
   for (uint32_t seed = 1; seed <= (test_small () ? 1u : 3u); seed++)
     {
       TsParams params;
@@ -112,15 +140,20 @@ check_kept (const char *name, const TsImage *exemplar)
       ts_params_init (&params);
       params.output_width = params.output_height = RESULT_SIDE;
       params.seed = seed;
+      params.wrap_x = params.wrap_y = tileable;
       CHECK (ts_synthesize (&params, exemplar, &out, NULL, NULL, &error) == TS_OK,
              "%s seed %u: %s", name, seed, error.message);
+      if (tileable)
+        roll_half (&out, scratch);
       CHECK (ts_lattice_result (&out, &lattice) == TS_MEASURE_OK, "%s seed %u measured", name, seed);
-      printf ("%s seed %u: lattice %.3f (strength %.2f)\n", name, seed, lattice.lattice,
-              lattice.strength);
-      CHECK (lattice.lattice >= MIN_LATTICE_KEPT, "%s seed %u: lattice %.3f below %.2f", name, seed,
-             lattice.lattice, MIN_LATTICE_KEPT);
+      printf ("%s%s seed %u: lattice %.3f (strength %.2f)\n", name, tileable ? ", tileable" : "",
+              seed, lattice.lattice, lattice.strength);
+      CHECK (lattice.lattice >= (tileable ? MIN_LATTICE_KEPT_TILEABLE : MIN_LATTICE_KEPT),
+             "%s%s seed %u: lattice %.3f below %.2f", name, tileable ? ", tileable" : "", seed,
+             lattice.lattice, tileable ? MIN_LATTICE_KEPT_TILEABLE : MIN_LATTICE_KEPT);
     }
   free (out.pixels);
+  free (scratch);
 }
 
 int
@@ -130,8 +163,10 @@ main (void)
 
   draw (&bricks, brick_pixel);
   draw (&diamonds, diamond_pixel);
-  check_kept ("bricks", &bricks);
-  check_kept ("diamonds", &diamonds);
+  check_kept ("bricks", &bricks, false);
+  check_kept ("diamonds", &diamonds, false);
+  check_kept ("bricks", &bricks, true);
+  check_kept ("diamonds", &diamonds, true);
   free (bricks.pixels);
   free (diamonds.pixels);
   return test_finish ("test-lattice-kept");
