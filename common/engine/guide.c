@@ -207,6 +207,22 @@ build_values (const TsGuides *g, const TsImage *exemplar, size_t out_w, size_t o
 }
 
 TsStatus
+ts_guide_planes_alloc (TsGuidePyramid *guides, size_t levels)
+{
+  guides->exemplar = calloc (levels, sizeof (TsGuidePlane));
+  guides->target = calloc (levels, sizeof (TsGuidePlane));
+  if (!guides->exemplar || !guides->target)
+    {
+      free (guides->exemplar);
+      free (guides->target);
+      guides->exemplar = guides->target = NULL;
+      return TS_ERROR_OUT_OF_MEMORY;
+    }
+  guides->levels = levels;
+  return TS_OK;
+}
+
+TsStatus
 ts_guide_pyramid_build (const TsParams *params, const TsImage *exemplar,
                         const TsPyramid *pyramid, TsGuidePyramid *guides)
 {
@@ -218,16 +234,8 @@ ts_guide_pyramid_build (const TsParams *params, const TsImage *exemplar,
   guides->style = !g->exemplar_guide;
   guides->weight = g->weight;
   guides->channels = g->channels;
-  guides->exemplar = calloc (pyramid->levels, sizeof (TsGuidePlane));
-  guides->target = calloc (pyramid->levels, sizeof (TsGuidePlane));
-  if (!guides->exemplar || !guides->target)
-    {
-      free (guides->exemplar);
-      free (guides->target);
-      guides->exemplar = guides->target = NULL;
-      return TS_ERROR_OUT_OF_MEMORY;
-    }
-  guides->levels = pyramid->levels;
+  if (ts_guide_planes_alloc (guides, pyramid->levels) != TS_OK)
+    return TS_ERROR_OUT_OF_MEMORY;
   status = guides->labels
              ? build_labels (g, exemplar, params->output_width, params->output_height, guides)
              : build_values (g, exemplar, params->output_width, params->output_height, guides);

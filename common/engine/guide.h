@@ -121,6 +121,8 @@ typedef struct
 TsStatus ts_guide_pyramid_build (const TsParams *params, const TsImage *exemplar,
                                  const TsPyramid *pyramid, TsGuidePyramid *guides);
 void     ts_guide_pyramid_free (TsGuidePyramid *guides);
+/* Empty planes for `levels` levels in `guides` (zeroed by the caller). */
+TsStatus ts_guide_planes_alloc (TsGuidePyramid *guides, size_t levels);
 
 /* The search data of `level`, whose working exemplar is `ex`. */
 TsStatus ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *ex,

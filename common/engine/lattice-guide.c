@@ -88,16 +88,8 @@ ts_lattice_guide_build (const TsLatticeEstimate *lattice, const TsPyramid *pyram
   if (lattice->vectors == 0)
     return TS_OK;
   reciprocal (lattice, recip);
-  guides->exemplar = calloc (pyramid->levels, sizeof (TsGuidePlane));
-  guides->target = calloc (pyramid->levels, sizeof (TsGuidePlane));
-  if (!guides->exemplar || !guides->target)
-    {
-      free (guides->exemplar);
-      free (guides->target);
-      guides->exemplar = guides->target = NULL;
-      return TS_ERROR_OUT_OF_MEMORY;
-    }
-  guides->levels = pyramid->levels;
+  if (ts_guide_planes_alloc (guides, pyramid->levels) != TS_OK)
+    return TS_ERROR_OUT_OF_MEMORY;
   guides->lattice = true;
   guides->channels = 2 * lattice->vectors;
   /* A pixel half a period off costs what two unrelated texture pixels

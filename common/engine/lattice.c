@@ -179,28 +179,17 @@ repeats_origin (const Correlation *c, int dx, int dy)
   return true;
 }
 
-/* Whether the autocorrelation falls around (dx, dy) every way at least
- * a quarter as much (relative to its height) as around the origin at its
- * steepest: a peak, not a ridge. */
+/* Whether the autocorrelation falls around (dx, dy), on every side
+ * (`every_way`: a peak) or on some side (a ridge: bands that repeat one
+ * way only), at least a quarter as much (relative to its height) as
+ * around the origin at its steepest. */
 static bool
-falls_every_way (const Correlation *c, int dx, int dy)
+falls (const Correlation *c, int dx, int dy, bool every_way)
 {
   double high, low, origin_high, origin_low, r = at (c, dx, dy);
   ring (c, dx, dy, &high, &low);
   ring (c, 0, 0, &origin_high, &origin_low);
-  return r - high >= 0.25 * r * (1.0 - origin_low);
-}
-
-/* Whether the autocorrelation falls around (dx, dy) across, at least a
- * quarter as much as around the origin at its steepest: a ridge (bands
- * that repeat one way only), if not a peak. */
-static bool
-falls_some_way (const Correlation *c, int dx, int dy)
-{
-  double high, low, origin_high, origin_low, r = at (c, dx, dy);
-  ring (c, dx, dy, &high, &low);
-  ring (c, 0, 0, &origin_high, &origin_low);
-  return r - low >= 0.25 * r * (1.0 - origin_low);
+  return r - (every_way ? high : low) >= 0.25 * r * (1.0 - origin_low);
 }
 
 /* The direction of the ridge through (dx, dy): the principal axis of its
@@ -369,7 +358,7 @@ periods_apart (const Correlation *c, const int a[2], const int d[2])
       for (int ny = -1; ny <= 1 && !apart; ny++)
         for (int nx = -1; nx <= 1 && !apart; nx++)
           apart = inside (c, e[0] + nx, e[1] + ny) && is_peak (c, e[0] + nx, e[1] + ny) &&
-                  falls_every_way (c, e[0] + nx, e[1] + ny);
+                  falls (c, e[0] + nx, e[1] + ny, true);
       if (!apart)
         return false;
     }
@@ -401,9 +390,9 @@ find_periods (const Correlation *c, TsLatticeEstimate *out)
           if (!repeats_origin (c, dx, dy))
             {
               /* bands: the nearest ridge of at least half the highest */
-              if (pass == 0 && falls_some_way (c, dx, dy))
+              if (pass == 0 && falls (c, dx, dy, false))
                 highest_ridge = fmax (highest_ridge, r);
-              else if (pass == 1 && r >= highest_ridge / 2.0 && falls_some_way (c, dx, dy) &&
+              else if (pass == 1 && r >= highest_ridge / 2.0 && falls (c, dx, dy, false) &&
                        (!ridge_found || length2 < (double) ridge[0] * ridge[0] +
                                                     (double) ridge[1] * ridge[1]))
                 {
