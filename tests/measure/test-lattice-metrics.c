@@ -1,4 +1,4 @@
-/* Unit tests of tools/lattice-metrics.c and tools/fft.c on synthetic
+/* Unit tests of tools/lattice-metrics.c and common/engine/fft.c on synthetic
  * lattices whose answers are known: a checkerboard kept (itself, a larger
  * and a shifted copy), the same board scrambled, a grid rotated by 30
  * degrees, noise (not near-regular), and the autocorrelation through the
