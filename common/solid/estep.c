@@ -480,7 +480,7 @@ size_t
 ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
                 TsSolidMatch *const matches[TS_SOLID_AXES], const size_t t_offset[TS_SOLID_AXES],
                 const uint8_t *batch_of, uint8_t batch, const TsSolidHistogram *histogram,
-                TsSolidHistogramDelta delta)
+                TsSolidHistogramDelta delta, TsCancel *cancel)
 {
   size_t n = level->n, voxels = n * n * n, changed = 0;
 
@@ -499,9 +499,10 @@ ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
     v.light_pieces = level->kept_apart == TS_SOLID_LIGHT_PIECES;
     v.shear = level->shear;
     size_t ahead = 0, pending = 0; /* next voxel to prefetch; prefetched, not voted */
+    /* A row's first voxel asks; after a stop the row is left. */
 #pragma omp for schedule(static)
     for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
-      for (size_t x = 0; x < n; x++)
+      for (size_t x = 0; x < n && !(x == 0 && ts_cancel_poll (cancel)); x++)
         {
           size_t p = (size_t) zy * n + x;
           size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n };

@@ -21,6 +21,10 @@
  * either side; a wall with none within reach keeps its value. */
 #define TS_SOLID_WALL_REACH 3
 
+/* The sequential loops ask the cancel callback once per this many
+ * voxels (its clock costs). */
+#define POLL_VOXELS 4096
+
 /* Each voxel's phase. */
 #define GROUND 0
 #define PIECE 1
@@ -75,12 +79,14 @@ deepest_first (const uint8_t *phase, const float *distance, size_t voxels, int32
  * voxel, so its peak is distance[root]. */
 static void
 flood (const TsSolidLevel *level, uint8_t *phase, const float *distance, const int32_t *order,
-       size_t count_in_order, float neck_height, int32_t *parent)
+       size_t count_in_order, float neck_height, int32_t *parent, TsCancel *cancel)
 {
   size_t n = level->n;
 
   for (size_t i = 0; i < count_in_order; i++)
     {
+      if (i % POLL_VOXELS == 0 && ts_cancel_poll (cancel))
+        return;
       int32_t p = order[i], roots[6], deepest = -1;
       int count = 0;
       bool apart = false;
@@ -172,7 +178,8 @@ copy_ground (TsSolidLevel *level, const uint8_t *phase)
 }
 
 TsStatus
-ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces, float neck_height)
+ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces, float neck_height,
+                     TsCancel *cancel)
 {
   size_t n = level->n, voxels = n * n * n, in_pieces = 0, dims[3] = { n, n, n };
   bool wrap[3] = { level->periodic, level->periodic, level->periodic };
@@ -185,6 +192,8 @@ ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces, flo
   for (size_t p = 0; p < voxels && status == TS_OK; p++)
     {
       const float *v = level->value + p * TS_CHANNELS;
+      if (p % POLL_VOXELS == 0 && ts_cancel_poll (cancel))
+        status = TS_ERROR_CANCELLED;
       bool light = ts_solid_is_light (v, split);
       phase[p] = (pieces == TS_SOLID_LIGHT_PIECES ? light : v[3] > 0.0f && !light) ? PIECE : GROUND;
       distance[p] = phase[p] == PIECE ? TS_DISTANCE_FAR : 0.0f;
@@ -194,15 +203,19 @@ ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces, flo
   /* All pieces: no neck, and no distance to sort by. */
   bool necks = pieces != TS_SOLID_NO_PIECES && grounds > 0;
   if (status == TS_OK && necks)
-    status = ts_distance_transform (distance, dims, wrap);
+    status = ts_solid_distance_transforms (&distance, 1, dims, wrap, cancel);
   if (status == TS_OK && necks)
     status = deepest_first (phase, distance, voxels, order, &in_pieces);
   if (status == TS_OK && necks)
+    flood (level, phase, distance, order, in_pieces, neck_height, parent, cancel);
+  /* A stop leaves the start's values as they were. */
+  if (status == TS_OK && necks && !ts_cancel_poll (cancel))
     {
-      flood (level, phase, distance, order, in_pieces, neck_height, parent);
       thicken (level, phase, voxels);
       copy_ground (level, phase);
     }
+  if (status == TS_OK && ts_cancel_requested (cancel))
+    status = TS_ERROR_CANCELLED;
   free (phase);
   free (distance);
   free (order);

@@ -27,7 +27,8 @@ clipped (float d)
  * boundary on either side) of the samples of `light` (1 light, 0 dark)
  * into `out`. */
 static TsStatus
-signed_distances (const uint8_t *light, const size_t dims[3], const bool wrap[3], float *out)
+signed_distances (const uint8_t *light, const size_t dims[3], const bool wrap[3], float *out,
+                  TsCancel *cancel)
 {
   size_t count = dims[0] * dims[1] * dims[2];
   float *to_light = malloc (count * sizeof (float));
@@ -39,9 +40,8 @@ signed_distances (const uint8_t *light, const size_t dims[3], const bool wrap[3]
       to_light[i] = light[i] ? 0.0f : TS_DISTANCE_FAR;
     }
   if (status == TS_OK)
-    status = ts_distance_transform (out, dims, wrap);
-  if (status == TS_OK)
-    status = ts_distance_transform (to_light, dims, wrap);
+    status = ts_solid_distance_transforms ((float *const[]) { out, to_light }, 2, dims, wrap,
+                                           cancel);
   for (size_t i = 0; i < count && status == TS_OK; i++)
     out[i] = clipped (light[i] ? out[i] - 0.5f : 0.5f - to_light[i]);
   free (to_light);
@@ -120,7 +120,7 @@ ts_solid_exemplar_stones (const TsImage *ex, float split, bool *stones)
  * dims) to the phase boundary at `split`, in a new array. */
 static TsStatus
 pixel_distances (const float *pixels, const size_t dims[3], const bool wrap[3], float split,
-                 float **out)
+                 float **out, TsCancel *cancel)
 {
   size_t count = dims[0] * dims[1] * dims[2];
   uint8_t *light = malloc (count);
@@ -130,7 +130,7 @@ pixel_distances (const float *pixels, const size_t dims[3], const bool wrap[3], 
   for (size_t i = 0; i < count && status == TS_OK; i++)
     light[i] = ts_solid_is_light (pixels + i * TS_CHANNELS, split);
   if (status == TS_OK)
-    status = signed_distances (light, dims, wrap, distance);
+    status = signed_distances (light, dims, wrap, distance, cancel);
   free (light);
   if (status != TS_OK)
     {
@@ -147,14 +147,14 @@ ts_solid_phase_distances (const TsImage *ex, float split, float **out)
   size_t dims[3] = { ex->width, ex->height, 1 };
   bool wrap[3] = { false, false, false };
 
-  return pixel_distances (ex->pixels, dims, wrap, split, out);
+  return pixel_distances (ex->pixels, dims, wrap, split, out, NULL);
 }
 
 TsStatus
-ts_solid_phase_field (const TsSolidLevel *level, float split, float **out)
+ts_solid_phase_field (const TsSolidLevel *level, float split, float **out, TsCancel *cancel)
 {
   size_t dims[3] = { level->n, level->n, level->n };
   bool wrap[3] = { level->periodic, level->periodic, level->periodic };
 
-  return pixel_distances (level->value, dims, wrap, split, out);
+  return pixel_distances (level->value, dims, wrap, split, out, cancel);
 }

@@ -42,18 +42,23 @@ ts_solid_phase_plan (TsSolidPhasePlan *plan, const TsImage *const finest[], size
 
 TsStatus
 ts_solid_phase_plan_start (TsSolidPhasePlan *plan, TsSolidLevel *level,
-                           const TsImage *const finest[], const int exemplar_of[TS_SOLID_AXES])
+                           const TsImage *const finest[], const int exemplar_of[TS_SOLID_AXES],
+                           TsCancel *cancel)
 {
   float split = plan->split[plan->first];
   TsStatus status;
 
   if (plan->pieces == TS_SOLID_NO_PIECES)
     return TS_OK;
-  status = ts_solid_wall_necks (level, split, plan->pieces, plan->neck_height);
+  status = ts_solid_wall_necks (level, split, plan->pieces, plan->neck_height, cancel);
   for (size_t e = 0; e < plan->exemplars && status == TS_OK; e++)
-    status = ts_solid_phase_distances (finest[e], plan->split[e], &plan->distance[e]);
+    {
+      status = ts_solid_phase_distances (finest[e], plan->split[e], &plan->distance[e]);
+      if (status == TS_OK && ts_cancel_poll (cancel))
+        status = TS_ERROR_CANCELLED;
+    }
   if (status == TS_OK)
-    status = ts_solid_phase_field (level, split, &plan->field);
+    status = ts_solid_phase_field (level, split, &plan->field, cancel);
   if (status != TS_OK)
     return status;
   for (int a = 0; a < TS_SOLID_AXES; a++)

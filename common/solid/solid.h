@@ -440,9 +440,11 @@ void ts_solid_start_random_blocks (TsSolidLevel *l, size_t level, size_t block, 
                                    bool majority);
 /* Finer level: each voxel's sources are its parent's in `coarser`,
  * refined to the child pixel of the finer exemplar level; its value is
- * that of the orientation that won the parent. */
+ * that of the orientation that won the parent. Every voxel is written
+ * even after a stop (the finest level is the caller's volume, written
+ * whole or not at all): `cancel` is only asked, for prompt reports. */
 void ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *coarser, size_t level,
-                                  uint32_t seed);
+                                  uint32_t seed, TsCancel *cancel);
 
 /* --- histogram matching --------------------------------------------------- */
 
@@ -513,7 +515,7 @@ TsStatus ts_solid_remove_specks (TsSolidLevel *level);
  * `neck_height` voxels above them, and their face neighbours of that
  * phase, copy the nearest voxel of the other phase (neck-walls.c). */
 TsStatus ts_solid_wall_necks (TsSolidLevel *level, float split, TsSolidPieces pieces,
-                              float neck_height);
+                              float neck_height, TsCancel *cancel);
 TsSolidPieces ts_solid_phase_in_pieces (const TsImage *ex, float split);
 /* Whether the exemplar's light phase, at its phase split `split`
  * (ts_solid_splits), is stones: at least TS_SOLID_STONE_SHARE of its
@@ -528,8 +530,15 @@ TsStatus ts_solid_exemplar_stones (const TsImage *ex, float split, bool *stones)
 /* Every pixel's clipped signed distance (light positive) to the phase
  * boundary at `split`, in a new array. */
 TsStatus ts_solid_phase_distances (const TsImage *ex, float split, float **out);
-/* The same for every voxel of the level's values. */
-TsStatus ts_solid_phase_field (const TsSolidLevel *level, float split, float **out);
+/* The same for every voxel of the level's values (polls `cancel`). */
+TsStatus ts_solid_phase_field (const TsSolidLevel *level, float split, float **out,
+                               TsCancel *cancel);
+/* Up to this many grids go to one ts_solid_distance_transforms. */
+#define TS_SOLID_MAX_POLLED_GRIDS 2
+/* ts_distance_transform of each of `count` grids, while the caller's
+ * thread asks `cancel` (may be NULL) midway (distance-polled.c). */
+TsStatus ts_solid_distance_transforms (float *const grids[], size_t count, const size_t dims[3],
+                                       const bool wrap[3], TsCancel *cancel);
 
 /* The phase guide's plan for one run on the default path (phase-plan.c). */
 typedef struct
@@ -556,7 +565,7 @@ TsStatus ts_solid_phase_plan (TsSolidPhasePlan *plan, const TsImage *const fines
  * exemplar_of[a] (-1: none). */
 TsStatus ts_solid_phase_plan_start (TsSolidPhasePlan *plan, TsSolidLevel *level,
                                     const TsImage *const finest[],
-                                    const int exemplar_of[TS_SOLID_AXES]);
+                                    const int exemplar_of[TS_SOLID_AXES], TsCancel *cancel);
 void     ts_solid_phase_plan_free (TsSolidPhasePlan *plan);
 
 /* Whether voxel xyz, turned into the phase in pieces (the light one at
@@ -582,12 +591,14 @@ ts_solid_reads_face_neighbours (const TsSolidLevel *level)
  * by the histogram excess); each orientation's source follows its own
  * best vote, and `chosen` (if any) records the vote; with a position
  * weight the position counts follow it. With `histogram`, changes are
- * added to `delta`. Returns the number of voxels whose value changed. */
+ * added to `delta`. Returns the number of voxels whose value changed.
+ * Polls `cancel` per row of voxels; after a stop the rest of the rows
+ * keep their values. */
 size_t ts_solid_estep (TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,
                        TsSolidMatch *const matches[TS_SOLID_AXES],
                        const size_t t_offset[TS_SOLID_AXES], const uint8_t *batch_of,
                        uint8_t batch, const TsSolidHistogram *histogram,
-                       TsSolidHistogramDelta delta);
+                       TsSolidHistogramDelta delta, TsCancel *cancel);
 /* Asks for the cache lines the E-step's vote for voxel p will read and
  * write (estep-prefetch.c). */
 void ts_solid_prefetch_voxel (const TsSolidLevel *level, const TsAxisGrid *gu, const TsAxisGrid *gv,

@@ -201,43 +201,47 @@ parent_of (size_t x, size_t shift, size_t cn, bool periodic)
 }
 
 void
-ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *c, size_t level, uint32_t seed)
+ts_solid_start_from_coarser (TsSolidLevel *l, const TsSolidLevel *c, size_t level, uint32_t seed,
+                             TsCancel *cancel)
 {
   size_t n = l->n, cn = c->n;
 
 #pragma omp parallel for schedule(static) if (n >= TS_SOLID_PARALLEL_EDGE)
   for (ptrdiff_t zy = 0; zy < (ptrdiff_t) (n * n); zy++)
-    for (size_t x = 0; x < n; x++)
-      {
-        size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
-        size_t cxyz[3] = { x / 2, xyz[1] / 2, xyz[2] / 2 };
-        size_t parent = (cxyz[2] * cn + cxyz[1]) * cn + cxyz[0];
-        for (int a = 0; a < TS_SOLID_AXES; a++)
-          {
-            int u, v;
-            size_t q[3] = { cxyz[0], cxyz[1], cxyz[2] };
-            if (!l->source[a])
+    {
+      ts_cancel_poll (cancel);
+      for (size_t x = 0; x < n; x++)
+        {
+          size_t xyz[3] = { x, (size_t) zy % n, (size_t) zy / n }, p = (size_t) zy * n + x;
+          size_t cxyz[3] = { x / 2, xyz[1] / 2, xyz[2] / 2 };
+          size_t parent = (cxyz[2] * cn + cxyz[1]) * cn + cxyz[0];
+          for (int a = 0; a < TS_SOLID_AXES; a++)
+            {
+              int u, v;
+              size_t q[3] = { cxyz[0], cxyz[1], cxyz[2] };
+              if (!l->source[a])
+                continue;
+              ts_solid_plane_axes (a, &u, &v);
+              /* Along its own axis an orientation's source would repeat
+               * on both children of a parent: pair them up at a random
+               * shift per block of the slice instead. */
+              size_t block = (xyz[(a + 1) % 3] / PAIRING_BLOCK) * n
+                             + xyz[(a + 2) % 3] / PAIRING_BLOCK;
+              q[a] = parent_of (xyz[a], ts_random (seed, (uint32_t) level, 8, block, 50 + (uint32_t) a) & 1,
+                                cn, l->periodic);
+              size_t cw = c->view[a].exemplar->width;
+              size_t s = (size_t) c->source[a][(q[2] * cn + q[1]) * cn + q[0]];
+              l->source[a][p] = opaque_source (&l->view[a], 2 * (s % cw) + (xyz[u] & 1),
+                                               2 * (s / cw) + (xyz[v] & 1),
+                                               ts_random (seed, (uint32_t) level, 0, p, 6));
+            }
+          int a = winner (c, parent);
+          if (a < 0)
+            {
+              value_from_sources (l, p);
               continue;
-            ts_solid_plane_axes (a, &u, &v);
-            /* Along its own axis an orientation's source would repeat
-             * on both children of a parent: pair them up at a random
-             * shift per block of the slice instead. */
-            size_t block = (xyz[(a + 1) % 3] / PAIRING_BLOCK) * n
-                           + xyz[(a + 2) % 3] / PAIRING_BLOCK;
-            q[a] = parent_of (xyz[a], ts_random (seed, (uint32_t) level, 8, block, 50 + (uint32_t) a) & 1,
-                              cn, l->periodic);
-            size_t cw = c->view[a].exemplar->width;
-            size_t s = (size_t) c->source[a][(q[2] * cn + q[1]) * cn + q[0]];
-            l->source[a][p] = opaque_source (&l->view[a], 2 * (s % cw) + (xyz[u] & 1),
-                                             2 * (s / cw) + (xyz[v] & 1),
-                                             ts_random (seed, (uint32_t) level, 0, p, 6));
-          }
-        int a = winner (c, parent);
-        if (a < 0)
-          {
-            value_from_sources (l, p);
-            continue;
-          }
-        take_source (l, p, a);
-      }
+            }
+          take_source (l, p, a);
+        }
+    }
 }

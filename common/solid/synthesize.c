@@ -402,7 +402,7 @@ iterate (Run *run, const TsPass *pass, uint32_t stream, uint8_t *batch_of,
       if (histogram && l->position_weight > 0.0f)
         ts_solid_position_excess (l);
       *changed += ts_solid_estep (l, &it.gu, &it.gv, it.matches, it.t_offset, batch_of, b,
-                                  histogram, delta);
+                                  histogram, delta, &run->midway);
       if (histogram)
         ts_solid_histogram_apply (histogram, delta);
       if (ts_cancel_poll (&run->midway))
@@ -509,12 +509,16 @@ synthesize_level (Run *run, size_t level)
     ts_solid_start_random_blocks (&run->level, level, plan.pass[0].patch, run->params->seed,
                                   run->params->cell_structure);
   else
-    ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed);
+    ts_solid_start_from_coarser (&run->level, &run->coarser, level, run->params->seed,
+                                 &run->midway);
   level_free (&run->coarser, run->volume);
+  if (ts_cancel_poll (&run->midway))
+    return TS_ERROR_CANCELLED;
   if (run->params->cell_structure)
     status = ts_solid_cell_guide_level (&run->cells, run->level.n, &run->midway);
   else if (level == 0 && run->levels > 1)
-    status = ts_solid_phase_plan_start (&run->phases, &run->level, run->finest, run->exemplar_of);
+    status = ts_solid_phase_plan_start (&run->phases, &run->level, run->finest, run->exemplar_of,
+                                        &run->midway);
   if (status != TS_OK)
     return status;
   run->level.continuation = level == 0 ? TS_SOLID_CONTINUATION : 0.0f;

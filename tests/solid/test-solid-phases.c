@@ -184,7 +184,7 @@ test_walls (bool dark_balls)
   float *value = balls (&level, two, 2, true, dark_balls);
   CHECK (phase_pieces (&level, !dark_balls) == 1, "%s: the neck joins them: %zu pieces", kind,
          phase_pieces (&level, !dark_balls));
-  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK, "%s: walls", kind);
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT, NULL) == TS_OK, "%s: walls", kind);
   CHECK (phase_pieces (&level, !dark_balls) == 2, "%s: a wall parts them: %zu pieces", kind,
          phase_pieces (&level, !dark_balls));
   CHECK (phase_pieces (&level, dark_balls) == 1, "%s: the ground stays one piece: %zu", kind,
@@ -202,7 +202,7 @@ test_walls (bool dark_balls)
 
   /* The balls' peaks (radius 6) rise less than 7 voxels above the neck. */
   value = balls (&level, two, 2, true, dark_balls);
-  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, 7.0f) == TS_OK
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, 7.0f, NULL) == TS_OK
              && phase_pieces (&level, !dark_balls) == 1,
          "%s: no wall where the peaks rise less than the neck height: %zu pieces", kind,
          phase_pieces (&level, !dark_balls));
@@ -214,7 +214,7 @@ test_walls (bool dark_balls)
   if (before)
     {
       memcpy (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float));
-      CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK,
+      CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT, NULL) == TS_OK,
              "%s: walls, one ball", kind);
       CHECK (memcmp (before, value, (size_t) N * N * N * TS_CHANNELS * sizeof (float)) == 0,
              "%s: a lone ball has no neck: nothing changes", kind);
@@ -227,7 +227,7 @@ test_walls (bool dark_balls)
   value = balls (&level, one, 0, false, dark_balls);
   for (size_t p = 0; p < (size_t) N * N * N; p++)
     value[p * TS_CHANNELS] = ball_l;
-  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT) == TS_OK
+  CHECK (ts_solid_wall_necks (&level, SPLIT, pieces, TS_SOLID_NECK_HEIGHT, NULL) == TS_OK
              && phase_pieces (&level, !dark_balls) == 1,
          "%s: all one phase", kind);
   free (value);
@@ -268,7 +268,7 @@ test_field (void)
   const float one[1] = { 16.0f };
   float *value = balls (&level, one, 1, false, false), *field = NULL;
 
-  CHECK (ts_solid_phase_field (&level, SPLIT, &field) == TS_OK, "field");
+  CHECK (ts_solid_phase_field (&level, SPLIT, &field, NULL) == TS_OK, "field");
   if (field)
     {
       size_t centre = (16 * N + 16) * N + 16, surface = (16 * N + 16) * N + 22,
