@@ -62,11 +62,6 @@ phase_plane (TsGuidePlane *plane, size_t width, size_t height, size_t vectors,
   return TS_OK;
 }
 
-static size_t
-level_side (size_t side, size_t level)
-{
-  return (side + ((size_t) 1 << level) - 1) >> level;
-}
 
 /* Bends `recip` so that `side` pixels hold a whole number of periods. */
 static double
@@ -101,7 +96,7 @@ ts_lattice_guide_build (const TsLatticeEstimate *lattice, const TsPyramid *pyram
   for (size_t l = 1; l < pyramid->levels && status == TS_OK; l++)
     {
       double scale = (double) ((size_t) 1 << l), ex_recip[2][2], out_recip[2][2];
-      size_t ow = level_side (out_w, l), oh = level_side (out_h, l);
+      size_t ow = ts_level_side (out_w, l), oh = ts_level_side (out_h, l);
       bool active[2] = { false, false };
       for (size_t k = 0; k < lattice->vectors; k++)
         {

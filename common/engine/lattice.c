@@ -1,5 +1,6 @@
 /* The lattice estimate: the normalised autocorrelation of lightness
- * (through the FFT), its periods, refined on their harmonics.
+ * (through the FFT), its periods, refined by a least-squares fit to
+ * every peak near a lattice point.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "lattice.h"
 #include "fft.h"
@@ -28,6 +29,8 @@ typedef struct
   double *r;              /* autocorrelation, (2 ry + 1) rows of 2 rx + 1 */
   int     rx, ry;         /* largest offsets held                          */
   int     limit_x, limit_y; /* largest offsets searched: half the sides    */
+  double  origin_fall;    /* 1 - the lowest value two pixels from the origin:
+                             how steeply the origin's peak falls          */
 } Correlation;
 
 static double
@@ -186,10 +189,9 @@ repeats_origin (const Correlation *c, int dx, int dy)
 static bool
 falls (const Correlation *c, int dx, int dy, bool every_way)
 {
-  double high, low, origin_high, origin_low, r = at (c, dx, dy);
+  double high, low, r = at (c, dx, dy);
   ring (c, dx, dy, &high, &low);
-  ring (c, 0, 0, &origin_high, &origin_low);
-  return r - (every_way ? high : low) >= 0.25 * r * (1.0 - origin_low);
+  return r - (every_way ? high : low) >= 0.25 * r * c->origin_fall;
 }
 
 /* The direction of the ridge through (dx, dy): the principal axis of its
@@ -367,8 +369,9 @@ periods_apart (const Correlation *c, const int a[2], const int d[2])
 
 /* The periods: the shortest peak apart from the origin that repeats
  * its shape, of at least half the highest such peak's value, then the
- * shortest such peak off its line and apart from it. A lone period on a
- * ridge (stripes) is taken across the ridge. */
+ * shortest such peak off its line and apart from it. Without such a
+ * peak, the nearest ridge of at least half the highest (bands), its
+ * period taken across it. */
 static void
 find_periods (const Correlation *c, TsLatticeEstimate *out)
 {
@@ -473,6 +476,9 @@ ts_lattice_estimate (const TsPyramid *pyramid, TsLatticeEstimate *out)
   status = correlate (&pyramid->level[level], &c);
   if (status != TS_OK)
     return status;
+  double origin_high, origin_low;
+  ring (&c, 0, 0, &origin_high, &origin_low);
+  c.origin_fall = 1.0 - origin_low;
   find_periods (&c, out);
   free (c.r);
   for (size_t k = 0; k < out->vectors; k++)

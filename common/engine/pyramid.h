@@ -20,6 +20,14 @@ size_t   ts_pyramid_depth_for (size_t width, size_t height, size_t coarsest_side
  * weighted by alpha so transparent pixels don't bleed colour. */
 TsStatus ts_pyramid_reduce (const TsImage *in, TsImage *out);
 
+/* A side of `side` pixels at pyramid level `level`: halved, rounded up,
+ * `level` times (the output's size there as ts_pyramid_reduce's). */
+static inline size_t
+ts_level_side (size_t side, size_t level)
+{
+  return (side + ((size_t) 1 << level) - 1) >> level;
+}
+
 /* Copies `base` into level 0 and reduces `levels - 1` times. */
 TsStatus ts_pyramid_build (const TsImage *base, size_t levels, TsPyramid *pyramid);
 void     ts_pyramid_free (TsPyramid *pyramid);

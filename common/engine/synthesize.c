@@ -41,11 +41,6 @@ report_midway (void *data)
   return ts_progress_report (&run->progress, 0.0, run->stage);
 }
 
-static size_t
-level_side (size_t side, size_t level)
-{
-  return (side + ((size_t) 1 << level) - 1) >> level;
-}
 
 /* Indices of the opaque pixels of an exemplar level. */
 static TsStatus
@@ -320,8 +315,8 @@ planned_work (const TsParams *params, const TsPyramid *pyramid)
   for (size_t l = 0; l < pyramid->levels; l++)
     {
       TsLevelPlan plan;
-      double pixels = (double) level_side (params->output_width, l) *
-                      (double) level_side (params->output_height, l);
+      double pixels = (double) ts_level_side (params->output_width, l) *
+                      (double) ts_level_side (params->output_height, l);
       ts_schedule_level (params, l, pyramid->levels, pyramid->level[l].width,
                          pyramid->level[l].height, &plan);
       total += pixels; /* MRPM of the level, about one iteration's work */
@@ -404,8 +399,8 @@ synthesize_level (Run *run, Work *w, size_t level)
   if (status != TS_OK)
     return status;
   ts_candidate_set_free (&w->coarser_candidates);
-  if (!ts_progress_report (&run->progress, (double) level_side (params->output_width, level) *
-                           (double) level_side (params->output_height, level),
+  if (!ts_progress_report (&run->progress, (double) ts_level_side (params->output_width, level) *
+                           (double) ts_level_side (params->output_height, level),
                            "matching exemplar"))
     return TS_ERROR_CANCELLED;
   run->stage = "optimizing";
@@ -413,8 +408,8 @@ synthesize_level (Run *run, Work *w, size_t level)
   memset (state, 0, sizeof *state);
   state->exemplar = ex;
   state->candidates = &w->candidates;
-  state->width = level_side (params->output_width, level);
-  state->height = level_side (params->output_height, level);
+  state->width = ts_level_side (params->output_width, level);
+  state->height = ts_level_side (params->output_height, level);
   state->wrap_x = params->wrap_x;
   state->wrap_y = params->wrap_y;
   state->cancel = &run->cancel;
