@@ -62,7 +62,6 @@ phase_plane (TsGuidePlane *plane, size_t width, size_t height, size_t vectors,
   return TS_OK;
 }
 
-
 /* Bends `recip` so that `side` pixels hold a whole number of periods. */
 static double
 whole_periods (double recip, size_t side)
@@ -76,7 +75,6 @@ ts_lattice_guide_build (const TsLatticeEstimate *lattice, const TsPyramid *pyram
 {
   double recip[2][2] = { { 0, 0 }, { 0, 0 } };
   TsStatus status = TS_OK;
-  const TsImage *bins = NULL;
   bool guided = false;
 
   memset (guides, 0, sizeof *guides);
@@ -118,8 +116,6 @@ ts_lattice_guide_build (const TsLatticeEstimate *lattice, const TsPyramid *pyram
                             pyramid->level[l].height, lattice->vectors, ex_recip, active);
       if (status == TS_OK)
         status = phase_plane (&guides->target[l], ow, oh, lattice->vectors, out_recip, active);
-      if (status == TS_OK && !guided)
-        bins = &guides->exemplar[l].value;
       guided = true;
     }
   if (status != TS_OK || !guided)
@@ -129,17 +125,6 @@ ts_lattice_guide_build (const TsLatticeEstimate *lattice, const TsPyramid *pyram
       ts_guide_pyramid_free (guides);
       return status;
     }
-  /* Bins run over the channels' mean, as for any value guide. */
-  guides->bin_low = INFINITY;
-  guides->bin_high = -INFINITY;
-  for (size_t i = 0; i < ts_image_pixel_count (bins); i++)
-    {
-      float key = 0.0f;
-      for (size_t c = 0; c < guides->channels; c++)
-        key += bins->pixels[i * TS_CHANNELS + c];
-      key /= (float) guides->channels;
-      guides->bin_low = fminf (guides->bin_low, key);
-      guides->bin_high = fmaxf (guides->bin_high, key);
-    }
+  /* No value range for bins: a lattice guide bins by phase (guide.c). */
   return TS_OK;
 }
