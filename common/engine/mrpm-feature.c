@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "mrpm-feature.h"
+#include "clones.h"
 #include "rng.h"
 
 #include <math.h>
@@ -62,7 +63,7 @@ ts_mrpm_feature_extract (const TsMrpmFeature *f, size_t x, size_t y, float *out)
 /* Exact squared feature distance; may stop early with a value > bound.
  * Coarse windows away from the border are read row by row; the clamped
  * path adds the same terms in the same order, so results are identical. */
-float
+TS_VECTOR_CLONES float
 ts_mrpm_feature_distance (const TsMrpmFeature *f, size_t ax, size_t ay, size_t bx, size_t by, float bound)
 {
   const TsImage *im = f->img[0];

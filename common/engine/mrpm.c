@@ -12,6 +12,7 @@
  * index), so the result does not depend on the thread count.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "mrpm.h"
+#include "clones.h"
 #include "mrpm-feature.h"
 #include "indexing.h"
 #include "rng.h"
@@ -128,7 +129,7 @@ gather_lead (const Ctx *c, const int32_t *cand, size_t n, float *lead, size_t st
  * distances) for the valid centre (x, y), into out / outd. With PCA the
  * best M by projected distance are re-ranked exactly; seeds make that
  * bound tight from the start, so most exact distances stop early. */
-static void
+TS_VECTOR_CLONES static void
 search_pixel (const Ctx *c, Scratch *s, size_t x, size_t y, size_t n, const int32_t *cand,
               const int32_t *cx, const int32_t *cy, const float *lead, size_t stride, size_t M,
               const int32_t *seed, const float *seedd, size_t nseed, int32_t *out, float *outd)
@@ -205,6 +206,21 @@ search_pixel (const Ctx *c, Scratch *s, size_t x, size_t y, size_t n, const int3
     {
       out[j] = j < nr ? s->ri[j] : -1;
       outd[j] = j < nr ? s->rd[j] : INFINITY;
+    }
+}
+
+/* The PCA projections of the valid centres of row y. */
+TS_VECTOR_CLONES static void
+project_row (const Ctx *c, const float *basis, size_t y, float *feat, float *proj)
+{
+  for (size_t x = c->r; x + c->r < c->w; x++)
+    {
+      float acc[MAX_PCA] = { 0 };
+      ts_mrpm_feature_extract (&c->f, x, y, feat);
+      for (size_t d = 0; d < c->f.dims; d++)
+        for (size_t j = 0; j < c->m; j++)
+          acc[j] += basis[d * c->m + j] * feat[d];
+      memcpy (proj + (y * c->w + x) * c->m, acc, c->m * sizeof (float));
     }
 }
 
@@ -469,15 +485,7 @@ ts_mrpm_level (const TsPyramid *pyramid, size_t level, const TsCandidateSet *coa
           float *feat = scratch[thread_id ()].feat;
           if (poll_cancel (&stop, cancel))
             continue;
-          for (size_t x = c.r; x + c.r < c.w; x++)
-            {
-              float acc[MAX_PCA] = { 0 };
-              ts_mrpm_feature_extract (&c.f, x, (size_t) y, feat);
-              for (size_t d = 0; d < c.f.dims; d++)
-                for (size_t j = 0; j < c.m; j++)
-                  acc[j] += basis[d * c.m + j] * feat[d];
-              memcpy (proj + ((size_t) y * c.w + x) * c.m, acc, c.m * sizeof (float));
-            }
+          project_row (&c, basis, (size_t) y, feat, proj);
         }
       c.proj = proj;
     }
