@@ -13,4 +13,13 @@
 #define TS_VECTOR_CLONES
 #endif
 
+/* A helper of a TS_VECTOR_CLONES function, inlined into each clone so
+ * that it is compiled for that clone's vectors too (left out of line,
+ * it would run the baseline's). */
+#if defined(__GNUC__)
+#define TS_CLONE_INLINE static inline __attribute__ ((always_inline))
+#else
+#define TS_CLONE_INLINE static inline
+#endif
+
 #endif

@@ -26,6 +26,7 @@ typedef struct
    * that their distances to the mean are computed side by side. */
   int32_t source[TS_LOCAL_VOTES];
   float   value[TS_CHANNELS][TS_LOCAL_VOTES];
+  float   vote_weight[TS_LOCAL_VOTES];
 } Votes;
 
 static void
@@ -58,7 +59,7 @@ choose (Votes *v, const float *value, int32_t source)
 
 /* The listed vote nearest the mean, the first of equals (as `choose`
  * one by one would find it): all distances first, then their minimum. */
-static void
+TS_CLONE_INLINE void
 choose_listed (Votes *v)
 {
   float d[TS_LOCAL_VOTES], least = INFINITY;
@@ -120,7 +121,7 @@ add_vote (Votes *v, const TsImage *ex, int32_t source, float weight, bool any_al
  * registers (the same additions in the same order as one by one); second
  * pass (`choosing`, only when the list overflowed): the vote nearest the
  * mean. */
-static inline void
+TS_CLONE_INLINE void
 collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
               const TsMatch *matches, const TsHistogram *histogram, size_t px, size_t py,
               bool choosing)
@@ -184,12 +185,94 @@ collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const T
     }
 }
 
-static void
+/* How many matched neighbourhoods cover (px, py), transparent votes
+ * included: an upper bound on its votes. */
+static size_t
+cover_count (const TsAxisGrid *gx, const TsAxisGrid *gy, size_t px, size_t py)
+{
+  size_t across = 0, down = 0;
+
+  for (size_t vx = gx->virtual_start[px]; vx < gx->virtual_start[px + 1]; vx++)
+    across += gx->cover_lo[vx] <= gx->cover_hi[vx] ? gx->cover_hi[vx] - gx->cover_lo[vx] + 1 : 0;
+  for (size_t vy = gy->virtual_start[py]; vy < gy->virtual_start[py + 1]; vy++)
+    down += gy->cover_lo[vy] <= gy->cover_hi[vy] ? gy->cover_hi[vy] - gy->cover_lo[vy] + 1 : 0;
+  return across * down;
+}
+
+/* The first pass when every vote fits the list: the votes are listed
+ * first and summed after, in the same order as collect_pass adds them,
+ * so the sums stay in registers instead of passing through memory at
+ * every vote. */
+TS_CLONE_INLINE void
+collect_listed (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
+                const TsMatch *matches, const TsHistogram *histogram, size_t px, size_t py)
+{
+  const float *pixels = state->exemplar->pixels;
+  const float *factor = histogram ? histogram->factor : NULL;
+  const TsGuideLevel *guide = state->guide;
+  ptrdiff_t ew = (ptrdiff_t) state->exemplar->width;
+  size_t count = 0, p = py * state->width + px;
+  float s0 = 0.0f, s1 = 0.0f, s2 = 0.0f, s3 = 0.0f, total = 0.0f;
+
+  for (size_t vy = gy->virtual_start[py]; vy < gy->virtual_start[py + 1]; vy++)
+    {
+      ptrdiff_t ty = gy->virtual_coord[vy];
+      size_t jy_lo = gy->cover_lo[vy], jy_hi = gy->cover_hi[vy];
+      for (size_t vx = gx->virtual_start[px]; vx < gx->virtual_start[px + 1]; vx++)
+        {
+          ptrdiff_t tx = gx->virtual_coord[vx];
+          size_t jx_lo = gx->cover_lo[vx], jx_hi = gx->cover_hi[vx];
+          for (size_t jy = jy_lo; jy <= jy_hi; jy++)
+            {
+              ptrdiff_t shift = (ty - ts_axis_grid_centre (gy, jy)) * ew + tx;
+              const TsMatch *row = matches + jy * gx->centres;
+              for (size_t jx = jx_lo; jx <= jx_hi; jx++)
+                {
+                  if (row[jx].centre < 0)
+                    continue;
+                  int32_t source = row[jx].centre + (int32_t) (shift - ts_axis_grid_centre (gx, jx));
+                  const float *value = pixels + (size_t) source * TS_CHANNELS;
+                  float weight = row[jx].weight;
+                  if (factor)
+                    weight *= factor[source];
+                  if (guide)
+                    weight *= ts_guide_vote_factor (guide, p, source);
+                  if (value[3] <= 0.0f || !(weight > 0.0f))
+                    continue;
+                  v->source[count] = source;
+                  v->vote_weight[count] = weight;
+                  for (int c = 0; c < TS_CHANNELS; c++)
+                    v->value[c][count] = value[c];
+                  count++;
+                }
+            }
+        }
+    }
+  for (size_t i = 0; i < count; i++)
+    {
+      float weight = v->vote_weight[i];
+      s0 += weight * v->value[0][i];
+      s1 += weight * v->value[1][i];
+      s2 += weight * v->value[2][i];
+      s3 += weight * v->value[3][i];
+      total += weight;
+    }
+  v->sum[0] = s0;
+  v->sum[1] = s1;
+  v->sum[2] = s2;
+  v->sum[3] = s3;
+  v->weight = total;
+  v->count = count;
+}
+
+TS_CLONE_INLINE void
 collect (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
          const TsMatch *matches, const TsHistogram *histogram, size_t px, size_t py)
 {
   if (v->choosing)
     collect_pass (v, state, gx, gy, matches, histogram, px, py, true);
+  else if (cover_count (gx, gy, px, py) <= TS_LOCAL_VOTES)
+    collect_listed (v, state, gx, gy, matches, histogram, px, py);
   else
     collect_pass (v, state, gx, gy, matches, histogram, px, py, false);
 }

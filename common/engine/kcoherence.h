@@ -5,6 +5,7 @@
 #ifndef TS_KCOHERENCE_H
 #define TS_KCOHERENCE_H
 
+#include "clones.h"
 #include "guide.h"
 #include "image.h"
 #include "indexing.h"
@@ -13,14 +14,6 @@
 
 #include <math.h>
 #include <stdint.h>
-
-/* The search runs in the M-steps' vector clones (clones.h): inlined there,
- * its patch distances use their wider vectors too. */
-#if defined(__GNUC__)
-#define TS_SEARCH_INLINE static inline __attribute__ ((always_inline))
-#else
-#define TS_SEARCH_INLINE static inline
-#endif
 
 typedef struct
 {
@@ -38,7 +31,7 @@ typedef struct
 /* Sum of squared differences against the exemplar neighbourhood centred
  * at pixel `index` (its window inside the exemplar), abandoned (returning
  * >= bound) as soon as a row pushes it past `bound`. */
-TS_SEARCH_INLINE float
+TS_CLONE_INLINE float
 ts_search_ssd_bounded (const TsSearch *s, size_t index, float bound)
 {
   size_t row_floats = s->patch * TS_CHANNELS, w = s->exemplar->width;
@@ -59,7 +52,7 @@ ts_search_ssd_bounded (const TsSearch *s, size_t index, float bound)
 
 /* Tries the exemplar neighbourhood centred at pixel `index`, a centre
  * whose window lies inside the exemplar. */
-TS_SEARCH_INLINE void
+TS_CLONE_INLINE void
 ts_search_consider_centre (TsSearch *s, size_t index)
 {
   float d;

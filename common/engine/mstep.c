@@ -114,7 +114,7 @@ proposals_init (Proposals *p, const TsImage *ex, const TsCandidateSet *cands, si
 
 /* The exemplar pixel `source`, shifted by (-dx, -dy), as a proposed
  * centre, and the k-coherence candidates of that position. */
-TS_SEARCH_INLINE void
+TS_CLONE_INLINE void
 propose (TsSearch *s, const Proposals *p, int32_t source, ptrdiff_t dx, ptrdiff_t dy)
 {
   size_t w = s->exemplar->width, h = s->exemplar->height;
@@ -134,7 +134,7 @@ propose (TsSearch *s, const Proposals *p, int32_t source, ptrdiff_t dx, ptrdiff_
  * the same candidates in the same order, every one already seen.
  * `proposed` holds the visit of each exemplar pixel's last proposal
  * (cleared with the stamps when the visit counter wraps). */
-TS_SEARCH_INLINE void
+TS_CLONE_INLINE void
 propose_once (TsSearch *s, uint32_t *proposed, const Proposals *p, int32_t source,
               ptrdiff_t dx, ptrdiff_t dy)
 {
