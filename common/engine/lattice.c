@@ -1,6 +1,7 @@
 /* The lattice estimate: the normalised autocorrelation of lightness
- * (through the FFT), its periods, refined by a least-squares fit to
- * every peak near a lattice point.
+ * (through the FFT), its periods (peaks along which the autocorrelation
+ * itself repeats), refined by a least-squares fit to every peak near a
+ * lattice point.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "lattice.h"
 #include "fft.h"
@@ -23,6 +24,13 @@
  * point (pixels): the rounding of two integer periods, each off by at
  * most half a pixel. */
 #define TS_LATTICE_FIT_RADIUS 1.5
+/* A period is one when the texture repeats along it, and then so does
+ * its autocorrelation: shifted by the period, the autocorrelation must
+ * explain at least this share of its own variance around the origin
+ * (see repeats_along). A streak, a ridge or a one-off match between two
+ * features has a peak there, but what surrounds the origin is not
+ * repeated around it. */
+#define TS_LATTICE_REPEAT_SHARE (1.0 / 3.0)
 
 typedef struct
 {
@@ -107,6 +115,44 @@ correlate (const TsImage *ex, Correlation *c)
       }
   free (data);
   return TS_OK;
+}
+
+/* The autocorrelation at a sub-pixel offset (bilinear). */
+static double
+at_subpixel (const Correlation *c, double x, double y)
+{
+  int x0 = (int) floor (x), y0 = (int) floor (y);
+  double fx = x - x0, fy = y - y0;
+  return (1.0 - fy) * ((1.0 - fx) * at (c, x0, y0) + fx * at (c, x0 + 1, y0)) +
+         fy * ((1.0 - fx) * at (c, x0, y0 + 1) + fx * at (c, x0 + 1, y0 + 1));
+}
+
+/* Whether the texture repeats along (vx, vy): over the offsets d within
+ * half the period of the origin (each way), R(d + v) predicts R(d) so
+ * that the squared misses are at most 1 - TS_LATTICE_REPEAT_SHARE of
+ * R's variance there. An exact repeat gives R(d + v) = R(d). */
+static bool
+repeats_along (const Correlation *c, double vx, double vy)
+{
+  int radius = (int) (0.5 * hypot (vx, vy));
+  double n = 0.0, sum = 0.0, squares = 0.0, misses = 0.0, scatter;
+
+  for (int y = -radius; y <= radius; y++)
+    for (int x = -radius; x <= radius; x++)
+      {
+        double r, shifted;
+        if (fabs (x + vx) > c->limit_x || fabs (y + vy) > c->limit_y)
+          continue;
+        r = at (c, x, y);
+        shifted = at_subpixel (c, x + vx, y + vy);
+        n += 1.0;
+        sum += r;
+        squares += r * r;
+        misses += (shifted - r) * (shifted - r);
+      }
+  /* n times R's variance there, as `misses` sums n squares */
+  scatter = n > 0.0 ? squares - sum * sum / n : 0.0;
+  return scatter > 1e-12 && misses <= (1.0 - TS_LATTICE_REPEAT_SHARE) * scatter;
 }
 
 /* Whether (dx, dy) is a local maximum of the autocorrelation (ties
@@ -368,10 +414,11 @@ periods_apart (const Correlation *c, const int a[2], const int d[2])
 }
 
 /* The periods: the shortest peak apart from the origin that repeats
- * its shape, of at least half the highest such peak's value, then the
- * shortest such peak off its line and apart from it. Without such a
- * peak, the nearest ridge of at least half the highest (bands), its
- * period taken across it. */
+ * its shape and along which the texture repeats, of at least half the
+ * highest such peak's value, then the shortest such peak off its line
+ * and apart from it. Without such a peak, the nearest ridge of at least
+ * half the highest (bands), its period taken across it, if the texture
+ * repeats along that. */
 static void
 find_periods (const Correlation *c, TsLatticeEstimate *out)
 {
@@ -405,9 +452,11 @@ find_periods (const Correlation *c, TsLatticeEstimate *out)
                 }
               continue;
             }
+          /* the costliest test last */
           if (pass == 0)
             {
-              highest = fmax (highest, r);
+              if (r > highest && repeats_along (c, dx, dy))
+                highest = r;
               continue;
             }
           if (r < highest / 2.0 || (pass == 2 && found == 0))
@@ -420,8 +469,9 @@ find_periods (const Correlation *c, TsLatticeEstimate *out)
                 continue;
             }
           size_t k = (size_t) pass - 1;
-          if (found <= k ||
-              length2 < (double) best[k][0] * best[k][0] + (double) best[k][1] * best[k][1])
+          if ((found <= k ||
+               length2 < (double) best[k][0] * best[k][0] + (double) best[k][1] * best[k][1]) &&
+              repeats_along (c, dx, dy))
             {
               best[k][0] = dx;
               best[k][1] = dy;
@@ -451,6 +501,11 @@ find_periods (const Correlation *c, TsLatticeEstimate *out)
       along = best[0][0] * dir[0] + best[0][1] * dir[1];
       out->vector[0][0] -= along * dir[0];
       out->vector[0][1] -= along * dir[1];
+      if (!repeats_along (c, out->vector[0][0], out->vector[0][1]))
+        {
+          *out = (TsLatticeEstimate) { 0 };
+          return;
+        }
     }
   fit_lattice (c, out);
   if (found == 2)

@@ -1,7 +1,8 @@
 /* The lattice estimate and the lattice guide: periods of synthetic
  * lattices (running bond, a turned grid of dots with a fractional
- * period, stripes) found to a fraction of a pixel; none in noise or a
- * flat image; a tileable output's phases run whole periods. */
+ * period, stripes) found to a fraction of a pixel; none in noise, a flat
+ * image, streaks, noise with one strong line or one feature seen twice;
+ * a tileable output's phases run whole periods. */
 #include "test-util.h"
 #include "engine/lattice.h"
 
@@ -56,6 +57,57 @@ stripes (TsImage *image, size_t side, double nx, double ny, double period)
         p[0] = (float) (50.0 + 30.0 * sin (two_pi * (nx * x + ny * y) / period) +
                         4.0 * ((double) (h >> 8) / 16777216.0 - 0.5));
       }
+}
+
+/* Rain-like streaks: white noise averaged along segments of `length`
+ * px in the direction (nx, ny); nothing repeats across them. */
+static void
+streaks (TsImage *image, size_t side, double nx, double ny, int length)
+{
+  test_noise_image (image, side, side, 17);
+  for (size_t y = 0; y < side; y++)
+    for (size_t x = 0; x < side; x++)
+      {
+        double sum = 0.0;
+        for (int t = 0; t < length; t++)
+          {
+            long sx = (long) lround (x + nx * t), sy = (long) lround (y + ny * t);
+            unsigned h = (unsigned) (sx * 73856093L ^ sy * 19349663L) * 2654435761u;
+            sum += (double) (h >> 8) / 16777216.0;
+          }
+        image->pixels[(y * side + x) * TS_CHANNELS] = (float) (20.0 + 60.0 * sum / length);
+      }
+}
+
+/* Smooth noise crossed by one bright line `width` px wide, at `slope`
+ * px across per px down. */
+static void
+noise_with_line (TsImage *image, size_t side, double slope, double width)
+{
+  test_noise_image (image, side, side, 19);
+  for (size_t y = 0; y < side; y++)
+    for (size_t x = 0; x < side; x++)
+      if (fabs ((double) x - (side / 2.0 + slope * ((double) y - side / 2.0))) < width / 2.0)
+        image->pixels[(y * side + x) * TS_CHANNELS] = 95.0f;
+}
+
+/* Smooth noise holding one feature (a ring and a bar) twice, `dx`, `dy`
+ * apart: a one-off match, not a repeat. */
+static void
+feature_twice (TsImage *image, size_t side, int dx, int dy)
+{
+  test_noise_image (image, side, side, 23);
+  for (int copy = 0; copy < 2; copy++)
+    {
+      double cx = side / 2.0 - dx / 2.0 + copy * dx, cy = side / 2.0 - dy / 2.0 + copy * dy;
+      for (size_t y = 0; y < side; y++)
+        for (size_t x = 0; x < side; x++)
+          {
+            double u = x - cx, v = y - cy, r = hypot (u, v);
+            if (fabs (r - 9.0) < 2.5 || (fabs (v) < 2.0 && fabs (u) < 16.0))
+              image->pixels[(y * side + x) * TS_CHANNELS] = 95.0f;
+          }
+    }
 }
 
 static TsLatticeEstimate
@@ -170,6 +222,30 @@ test_none (void)
   free (image.pixels);
 }
 
+/* No texture that does not repeat has a lattice, however strong a peak
+ * or ridge of its autocorrelation. */
+static void
+test_no_repeat (void)
+{
+  TsImage image;
+  double norm = hypot (1.0, 2.0);
+  streaks (&image, 128, 1.0 / norm, 2.0 / norm, 40);
+  TsLatticeEstimate e = estimate (&image);
+  CHECK (e.vectors == 0, "streaks: %zu vectors (%.2f, %.2f), strength %.3f", e.vectors,
+         e.vector[0][0], e.vector[0][1], e.strength);
+  free (image.pixels);
+  noise_with_line (&image, 128, 0.3, 3.0);
+  e = estimate (&image);
+  CHECK (e.vectors == 0, "noise with one line: %zu vectors (%.2f, %.2f), strength %.3f", e.vectors,
+         e.vector[0][0], e.vector[0][1], e.strength);
+  free (image.pixels);
+  feature_twice (&image, 128, 34, 22);
+  e = estimate (&image);
+  CHECK (e.vectors == 0, "one feature twice: %zu vectors (%.2f, %.2f), strength %.3f", e.vectors,
+         e.vector[0][0], e.vector[0][1], e.strength);
+  free (image.pixels);
+}
+
 /* A tileable output's phases run a whole number of periods across it:
  * the step from the last column to the first is the step between two
  * neighbouring columns. */
@@ -219,6 +295,7 @@ main (void)
   test_turned_dots ();
   test_stripes ();
   test_none ();
+  test_no_repeat ();
   test_guide_wraps ();
   return test_finish ("test-lattice");
 }
