@@ -2,7 +2,7 @@
  * guided start and proposals.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "guide.h"
-#include "guide-blur.h"
+#include "guide-style.h"
 #include "indexing.h"
 #include "rng.h"
 
@@ -94,28 +94,6 @@ build_labels (const TsGuides *g, const TsImage *exemplar, size_t out_w, size_t o
   return status;
 }
 
-/* Mean and standard deviation of channel 0 of the pixels of `image`
- * (those whose `alpha` is positive, if given). */
-static void
-spread (const float *values, size_t stride, size_t n, const float *alpha, double *mean, double *sd)
-{
-  double sum = 0.0, sum2 = 0.0, count = 0.0;
-  for (size_t i = 0; i < n; i++)
-    if (!alpha || alpha[i * TS_CHANNELS] > 0.0f)
-      {
-        sum += values[i * stride];
-        count += 1.0;
-      }
-  *mean = count > 0.0 ? sum / count : 0.0;
-  for (size_t i = 0; i < n; i++)
-    if (!alpha || alpha[i * TS_CHANNELS] > 0.0f)
-      {
-        double d = values[i * stride] - *mean;
-        sum2 += d * d;
-      }
-  *sd = count > 0.0 ? sqrt (sum2 / count) : 0.0;
-}
-
 static TsStatus
 value_pyramid (const TsImage *base, TsGuidePlane *planes, size_t levels)
 {
@@ -168,32 +146,20 @@ build_values (const TsGuides *g, const TsImage *exemplar, size_t out_w, size_t o
         p[c] = g->target_guide[i * ch + c];
       p[3] = 1.0f;
     }
-  /* Style transfer compares the layout's tones, not the grain: the
-   * grain is the exemplar's to give. */
-  if (!g->exemplar_guide && (ts_guide_blur (&ex_base, TS_STYLE_GUIDE_BLUR) != TS_OK ||
-                             ts_guide_blur (&target_base, TS_STYLE_GUIDE_BLUR) != TS_OK))
-    status = TS_ERROR_OUT_OF_MEMORY;
-  if (status == TS_OK && !g->exemplar_guide)
-    {
-      /* Style transfer: the target's lightness moved to the exemplar's
-       * mean and spread, so each part of it finds texture of its tone. */
-      double ex_mean, ex_sd, t_mean, t_sd;
-      spread (ex_base.pixels, TS_CHANNELS, ex_n, exemplar->pixels + 3, &ex_mean, &ex_sd);
-      spread (target_base.pixels, TS_CHANNELS, out_n, NULL, &t_mean, &t_sd);
-      double gain = t_sd > 1e-6 ? ex_sd / t_sd : 1.0;
-      for (size_t i = 0; i < out_n; i++)
-        target_base.pixels[i * TS_CHANNELS] =
-          (float) ((target_base.pixels[i * TS_CHANNELS] - t_mean) * gain + ex_mean);
-    }
-  /* Bins run over the exemplar guide's channel mean. */
+  /* Style transfer compares the layout's tones and the grain's
+   * strength, not the grain itself: that is the exemplar's to give. */
+  if (!g->exemplar_guide)
+    status = ts_style_guides (exemplar, &ex_base, &target_base);
+  /* Bins run over the exemplar guide's channel mean (a style guide's
+   * tone alone). */
   guides->bin_low = INFINITY;
   guides->bin_high = -INFINITY;
   for (size_t i = 0; i < ex_n; i++)
     {
       float key = 0.0f;
-      for (size_t c = 0; c < ch; c++)
+      for (size_t c = 0; c < guides->bin_channels; c++)
         key += ex_base.pixels[i * TS_CHANNELS + c];
-      key /= (float) ch;
+      key /= (float) guides->bin_channels;
       guides->bin_low = fminf (guides->bin_low, key);
       guides->bin_high = fmaxf (guides->bin_high, key);
     }
@@ -233,7 +199,8 @@ ts_guide_pyramid_build (const TsParams *params, const TsImage *exemplar,
   guides->labels = ts_guides_use_labels (params, exemplar);
   guides->style = !g->exemplar_guide;
   guides->weight = g->weight;
-  guides->channels = g->channels;
+  guides->channels = guides->style ? TS_STYLE_GUIDE_CHANNELS : g->channels;
+  guides->bin_channels = guides->style ? 1 : g->channels;
   if (ts_guide_planes_alloc (guides, pyramid->levels) != TS_OK)
     return TS_ERROR_OUT_OF_MEMORY;
   status = guides->labels
@@ -289,9 +256,9 @@ bin_of_values (const TsGuideLevel *g, const float *v)
 
   if (g->lattice)
     return bin_of_phases (g, v);
-  for (size_t c = 0; c < g->channels; c++)
+  for (size_t c = 0; c < g->bin_channels; c++)
     key += v[c];
-  bin = (key / (float) g->channels - g->bin_low) * g->bin_scale;
+  bin = (key / (float) g->bin_channels - g->bin_low) * g->bin_scale;
   if (!(bin > 0.0f))
     return 0;
   return bin >= (float) g->bins ? g->bins - 1 : (size_t) bin;
@@ -341,7 +308,7 @@ guide_variance (const TsImage *guide, size_t channels, const TsImage *ex)
   for (size_t c = 0; c < channels; c++)
     {
       double mean, sd;
-      spread (guide->pixels + c, TS_CHANNELS, ts_image_pixel_count (guide), ex->pixels + 3, &mean,
+      ts_guide_spread (guide->pixels + c, TS_CHANNELS, ts_image_pixel_count (guide), ex->pixels + 3, &mean,
               &sd);
       var += sd * sd;
     }
@@ -363,6 +330,7 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
   out->proposals = guides->lattice ? TS_LATTICE_PROPOSALS
                   : guides->style && level == 0 ? TS_STYLE_FINEST_PROPOSALS : TS_GUIDE_PROPOSALS;
   out->channels = guides->channels;
+  out->bin_channels = guides->bin_channels;
   /* A disagreeing guide pixel costs `weight` times the expected squared
    * difference of two unrelated texture pixels (twice the variance);
    * value differences are counted in the same units through the guide's
@@ -375,7 +343,9 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
     }
   else
     {
-      double guide_var = guide_variance (&out->exemplar->value, out->channels, ex);
+      /* A style guide's contrast is scaled to its tone's spread. */
+      double guide_var =
+        guide_variance (&out->exemplar->value, guides->style ? 1 : out->channels, ex);
       guide_var = guide_var > TS_GUIDE_MIN_SPREAD ? guide_var : TS_GUIDE_MIN_SPREAD;
       out->cost = (float) (guides->weight * colour_var / guide_var);
       /* A difference as large as two unrelated guide values' costs what

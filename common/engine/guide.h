@@ -28,26 +28,18 @@
  * neighbourhood finds the right phase as well as four (and costs a
  * quarter as much). */
 #define TS_LATTICE_PROPOSALS 1
-/* Style transfer's guides are lightness blurred by a Gaussian of this
- * many pixels: details below it (a texture's grain) are left to the
- * exemplar. Chosen on bark, granite1, rock and wood1 restyling land1
- * (192², seed 1, benchmarks/style-transfer.sh; then with the guide alike
- * at every level and a denser grid):
- * blurred-lightness correlation 0.94-0.96 and sharpness 0.61-0.93 at 4,
- * against 0.98-0.99 and 0.49-0.87 at 2, 0.85-0.91 and 0.61-0.96 at 6. */
-#define TS_STYLE_GUIDE_BLUR 4.0
 /* A style transfer's guide weighs this much of its weight at the
  * finest level, and TS_STYLE_COARSE_WEIGHT times it at the coarser
  * ones, and its votes fall off twice as sharply with the tone
  * (TS_STYLE_VOTE_SHARPNESS): the coarser levels lay out the tones, the
- * votes keep them, and at the finest level a strong guide picks the
- * grain by its tone, leaving out the grain that darkens or lightens its
- * surroundings (a rock's joints, a granite's veins). Chosen on the
- * tuning half below at plain synthesis's neighbourhood spacing: blurred
- * lightness correlation within 0.003 and sharpness higher on every one
- * (0.63-0.96 from 0.61-0.93), against the guide alike at every level. */
+ * votes keep them, and at the finest level a strong guide would pick
+ * the grain by its tone. The finest weight was chosen on the tuning
+ * half of benchmarks/style-transfer.sh before the guide had a contrast
+ * channel; the coarse weight, doubled with it, wins back the layout the
+ * contrast takes (test-guided's case, seeds 1-8: blurred-lightness
+ * correlation 0.902-0.914 from 0.889-0.909 at 2). */
 #define TS_STYLE_FINEST_WEIGHT 0.25
-#define TS_STYLE_COARSE_WEIGHT 2.0
+#define TS_STYLE_COARSE_WEIGHT 4.0
 #define TS_STYLE_VOTE_SHARPNESS (2.0 * TS_GUIDE_VOTE_SHARPNESS)
 /* At the finest level a style transfer proposes only this many exemplar
  * pixels of the right tone per neighbourhood: its coarser levels have
@@ -77,6 +69,7 @@ typedef struct
   bool          lattice;   /* the exemplar's own lattice (lattice-guide.c),
                               not a layout the caller gave             */
   size_t        channels;  /* of a value guide, up to TS_CHANNELS */
+  size_t        bin_channels; /* the first ones, whose mean is the bin key */
   size_t        label_count;
   double        weight;
   size_t        levels;
@@ -93,6 +86,7 @@ typedef struct
   bool     labels;
   bool     lattice;     /* see TsGuidePyramid */
   size_t   channels;    /* of a value guide */
+  size_t   bin_channels; /* see TsGuidePyramid */
   float    cost;        /* per disagreeing label, or per squared value unit */
   size_t   bins;
   float    bin_low, bin_scale;

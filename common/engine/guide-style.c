@@ -1,0 +1,165 @@
+/* SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "guide-style.h"
+#include "image.h"
+#include "indexing.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+void
+ts_guide_spread (const float *values, size_t stride, size_t n, const float *alpha, double *mean,
+                 double *sd)
+{
+  double sum = 0.0, sum2 = 0.0, count = 0.0;
+  for (size_t i = 0; i < n; i++)
+    if (!alpha || alpha[i * TS_CHANNELS] > 0.0f)
+      {
+        sum += values[i * stride];
+        count += 1.0;
+      }
+  *mean = count > 0.0 ? sum / count : 0.0;
+  for (size_t i = 0; i < n; i++)
+    if (!alpha || alpha[i * TS_CHANNELS] > 0.0f)
+      {
+        double d = values[i * stride] - *mean;
+        sum2 += d * d;
+      }
+  *sd = count > 0.0 ? sqrt (sum2 / count) : 0.0;
+}
+
+/* One pass along rows (`across`) or columns of channel `c`. */
+static void
+blur_pass (const float *in, float *out, size_t w, size_t h, size_t c, const double *kernel,
+           int radius, bool across)
+{
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t y = 0; y < (ptrdiff_t) h; y++)
+    for (size_t x = 0; x < w; x++)
+      {
+        double s = 0.0;
+        for (int k = -radius; k <= radius; k++)
+          {
+            size_t sx = across ? ts_mirror ((ptrdiff_t) x + k, w) : x;
+            size_t sy = across ? (size_t) y : ts_mirror (y + k, h);
+            s += kernel[k + radius] * in[(sy * w + sx) * TS_CHANNELS + c];
+          }
+        out[((size_t) y * w + x) * TS_CHANNELS + c] = (float) s;
+      }
+}
+
+/* Channel `c` of `image` blurred in place by a Gaussian of `sigma`
+ * pixels (mirrored borders). */
+static TsStatus
+blur_channel (TsImage *image, size_t c, double sigma)
+{
+  size_t w = image->width, h = image->height;
+  int radius = (int) ceil (3.0 * sigma);
+  double *kernel = malloc ((size_t) (2 * radius + 1) * sizeof (double)), total = 0.0;
+  float *tmp = malloc (w * h * TS_CHANNELS * sizeof (float));
+
+  if (!kernel || !tmp)
+    {
+      free (kernel);
+      free (tmp);
+      return TS_ERROR_OUT_OF_MEMORY;
+    }
+  for (int k = -radius; k <= radius; k++)
+    total += kernel[k + radius] = exp (-0.5 * k * k / (sigma * sigma));
+  for (int k = 0; k <= 2 * radius; k++)
+    kernel[k] /= total;
+  blur_pass (image->pixels, tmp, w, h, c, kernel, radius, true);
+  blur_pass (tmp, image->pixels, w, h, c, kernel, radius, false);
+  free (kernel);
+  free (tmp);
+  return TS_OK;
+}
+
+/* The target asks, at each tone, for the exemplar's mean contrast at
+ * that tone (in TS_STYLE_TONE_STEPS steps of its range, linearly
+ * between them): the grain the exemplar usually has there, neither its
+ * evenest nor its busiest parts. A step without exemplar pixels takes
+ * `overall`, the mean over all. */
+static TsStatus
+target_contrast (const TsImage *exemplar, const TsImage *ex_guide, TsImage *target_guide,
+                 double overall)
+{
+  size_t ex_n = ts_image_pixel_count (ex_guide), out_n = ts_image_pixel_count (target_guide);
+  const float *e = ex_guide->pixels;
+  float *t = target_guide->pixels, low = INFINITY, high = -INFINITY;
+  double sum[TS_STYLE_TONE_STEPS] = { 0 }, count[TS_STYLE_TONE_STEPS] = { 0 };
+  double mean[TS_STYLE_TONE_STEPS];
+
+  for (size_t i = 0; i < ex_n; i++)
+    if (exemplar->pixels[i * TS_CHANNELS + 3] > 0.0f)
+      {
+        low = fminf (low, e[i * TS_CHANNELS]);
+        high = fmaxf (high, e[i * TS_CHANNELS]);
+      }
+  double step = high > low ? (double) (high - low) / (TS_STYLE_TONE_STEPS - 1) : 1.0;
+  for (size_t i = 0; i < ex_n; i++)
+    if (exemplar->pixels[i * TS_CHANNELS + 3] > 0.0f)
+      {
+        /* Each pixel counts towards its two nearest steps, by nearness. */
+        double at = (e[i * TS_CHANNELS] - low) / step;
+        size_t k = (size_t) at < TS_STYLE_TONE_STEPS - 1 ? (size_t) at : TS_STYLE_TONE_STEPS - 2;
+        double f = fmin (fmax (at - (double) k, 0.0), 1.0);
+        sum[k] += (1.0 - f) * e[i * TS_CHANNELS + 1];
+        count[k] += 1.0 - f;
+        sum[k + 1] += f * e[i * TS_CHANNELS + 1];
+        count[k + 1] += f;
+      }
+  for (size_t k = 0; k < TS_STYLE_TONE_STEPS; k++)
+    mean[k] = count[k] > 0.0 ? sum[k] / count[k] : overall;
+  for (size_t i = 0; i < out_n; i++)
+    {
+      double at = fmin (fmax ((t[i * TS_CHANNELS] - low) / step, 0.0), TS_STYLE_TONE_STEPS - 1);
+      size_t k = (size_t) at < TS_STYLE_TONE_STEPS - 1 ? (size_t) at : TS_STYLE_TONE_STEPS - 2;
+      double f = at - (double) k;
+      t[i * TS_CHANNELS + 1] = (float) ((1.0 - f) * mean[k] + f * mean[k + 1]);
+    }
+  return TS_OK;
+}
+
+TsStatus
+ts_style_guides (const TsImage *exemplar, TsImage *ex_guide, TsImage *target_guide)
+{
+  size_t ex_n = ts_image_pixel_count (ex_guide), out_n = ts_image_pixel_count (target_guide);
+  const float *alpha = exemplar->pixels + 3;
+  double ex_mean, ex_sd, t_mean, t_sd, c_mean, c_sd;
+  float *e = ex_guide->pixels, *t = target_guide->pixels;
+
+  /* Channel 1 keeps the lightness while channel 0 is blurred into the
+   * tone; their squared difference, blurred alike, is the grain's
+   * local variance. */
+  for (size_t i = 0; i < ex_n; i++)
+    e[i * TS_CHANNELS + 1] = e[i * TS_CHANNELS];
+  if (blur_channel (ex_guide, 0, TS_STYLE_GUIDE_BLUR) != TS_OK
+      || blur_channel (target_guide, 0, TS_STYLE_GUIDE_BLUR) != TS_OK)
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (size_t i = 0; i < ex_n; i++)
+    {
+      float d = e[i * TS_CHANNELS + 1] - e[i * TS_CHANNELS];
+      e[i * TS_CHANNELS + 1] = d * d;
+    }
+  if (blur_channel (ex_guide, 1, TS_STYLE_GUIDE_BLUR) != TS_OK)
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (size_t i = 0; i < ex_n; i++)
+    e[i * TS_CHANNELS + 1] = sqrtf (fmaxf (e[i * TS_CHANNELS + 1], 0.0f));
+
+  /* The target's tone moved to the exemplar's mean and spread, so each
+   * part of it finds texture of its tone. */
+  ts_guide_spread (e, TS_CHANNELS, ex_n, alpha, &ex_mean, &ex_sd);
+  ts_guide_spread (t, TS_CHANNELS, out_n, NULL, &t_mean, &t_sd);
+  double gain = t_sd > 1e-6 ? ex_sd / t_sd : 1.0;
+  for (size_t i = 0; i < out_n; i++)
+    t[i * TS_CHANNELS] = (float) ((t[i * TS_CHANNELS] - t_mean) * gain + ex_mean);
+
+  /* The contrast counts in the tone's units, scaled to the tone's
+   * spread: a contrast off by its usual spread costs as much as a tone
+   * off by its usual spread, times TS_STYLE_CONTRAST_WEIGHT. */
+  ts_guide_spread (e + 1, TS_CHANNELS, ex_n, alpha, &c_mean, &c_sd);
+  double scale = c_sd > 1e-6 ? TS_STYLE_CONTRAST_WEIGHT * ex_sd / c_sd : 0.0;
+  for (size_t i = 0; i < ex_n; i++)
+    e[i * TS_CHANNELS + 1] = (float) (e[i * TS_CHANNELS + 1] * scale);
+  return target_contrast (exemplar, ex_guide, target_guide, c_mean * scale);
+}
