@@ -8,6 +8,7 @@
 #include "guide.h"
 #include "histogram.h"
 #include "mrpm.h"
+#include "region-bound.h"
 #include "schedule.h"
 
 typedef struct
@@ -28,6 +29,7 @@ typedef struct
                                          squared distance from its vote mean */
   TsCancel             *cancel;     /* polled by both steps, or NULL        */
   const TsGuideLevel   *guide;      /* guides of this level, or NULL        */
+  const TsRegionBound  *region_bound; /* cut pixels of oversized coherent regions, or NULL */
 } TsLevelState;
 
 /* Neighbourhood centres of one iteration along one axis, plus for every

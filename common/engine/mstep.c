@@ -261,6 +261,10 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         ts_search_begin (&s, ex_pixels);
         if (s.guide)
           ts_guide_query_gather (s.guide, cx, cy, state->wrap_x, state->wrap_y);
+        /* A centre cut off an oversized coherent region may not keep
+         * its offset: its own source counts as already tried. */
+        if (ts_region_bound_is_cut (state->region_bound, (size_t) cy * state->width + (size_t) cx))
+          s.stamp[state->source[(size_t) cy * state->width + (size_t) cx]] = s.visit;
         search_centre (&s, proposed, &proposals, state, pass, seed_stream, cx, cy, (size_t) i);
         if (s.guide)
           propose_by_guide (&s, &proposals, state, seed_stream, cx, cy, (size_t) i);

@@ -197,6 +197,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   TsStatus status;
   float occ_strength = TS_OCCURRENCE_STRENGTH;
   size_t free_pixels = pixels;
+  TsRegionBound region_bound = { 0 };
 
   /* Convergence is judged on the pixels that may change: with most of
    * the output preserved, a fraction of all pixels would stop the
@@ -219,6 +220,21 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
     }
   state->penalty = occ_strength > 0.0f ? occurrence.penalty : NULL;
 
+  /* Copies are bounded where the engine lays out the whole result; an
+   * initial map or a caller's guide lays it out instead. */
+  if (!params->initial_source && !params->guides)
+    {
+      status = ts_region_bound_init (&region_bound, state->width, state->height,
+                                     state->exemplar->width, state->exemplar->height);
+      if (status != TS_OK)
+        {
+          ts_occurrence_free (&occurrence);
+          free (usage);
+          return status;
+        }
+      state->region_bound = &region_bound;
+    }
+
   if (params->histogram_matching)
     {
       histogram = malloc (sizeof *histogram);
@@ -229,6 +245,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
             ts_histogram_free (histogram);
           free (histogram);
           ts_occurrence_free (&occurrence);
+          ts_region_bound_free (&region_bound);
           free (usage);
           return TS_ERROR_OUT_OF_MEMORY;
         }
@@ -265,6 +282,9 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
                                  ts_image_pixel_count (state->exemplar));
           if (state->penalty)
             ts_occurrence_update (&occurrence, usage, pixels, pass->patch, state->opaque_count);
+          if (state->region_bound)
+            ts_region_bound_mark (&region_bound, state->source, state->exemplar->width,
+                                  state->wrap_x, state->wrap_y);
           matches = malloc (gx.centres * gy.centres * sizeof (TsMatch));
           status = matches ? ts_mstep (state, &gx, &gy, pass, plan->k_use, stream, matches)
                            : TS_ERROR_OUT_OF_MEMORY;
@@ -303,8 +323,10 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
     ts_histogram_free (histogram);
   free (histogram);
   ts_occurrence_free (&occurrence);
+  ts_region_bound_free (&region_bound);
   free (usage);
   state->penalty = NULL;
+  state->region_bound = NULL;
   return status;
 }
 

@@ -1,0 +1,47 @@
+/* A bound on the area of coherent regions: output pixels that copy one
+ * exemplar area at one offset (internal).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#ifndef TS_REGION_BOUND_H
+#define TS_REGION_BOUND_H
+
+#include "error.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* Flag bits per output pixel. */
+enum
+{
+  TS_REGION_SEEN = 1, /* labelled in the current pass   */
+  TS_REGION_CUT  = 2  /* beyond its region's bound: may not continue its offset */
+};
+
+typedef struct
+{
+  uint8_t  *flags;    /* per output pixel, TS_REGION_* bits */
+  uint32_t *queue;    /* one region's pixels in breadth-first order */
+  size_t    width, height;
+  size_t    max_area; /* output pixels a coherent region may cover */
+} TsRegionBound;
+
+/* A bound for an output level of width x height whose exemplar level is
+ * exemplar_width x exemplar_height. */
+TsStatus ts_region_bound_init (TsRegionBound *bound, size_t width, size_t height,
+                               size_t exemplar_width, size_t exemplar_height);
+void     ts_region_bound_free (TsRegionBound *bound);
+
+/* Labels the coherent regions of `source` (4-neighbours whose sources are
+ * exemplar neighbours in the same direction; across the edges along a
+ * wrapping axis) and flags as cut every pixel of a region beyond the
+ * first max_area pixels reached breadth-first from its first pixel. */
+void     ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exemplar_width,
+                               bool wrap_x, bool wrap_y);
+
+static inline bool
+ts_region_bound_is_cut (const TsRegionBound *bound, size_t pixel)
+{
+  return bound && (bound->flags[pixel] & TS_REGION_CUT);
+}
+
+#endif
