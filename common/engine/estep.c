@@ -187,7 +187,7 @@ collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const T
 
 /* How many matched neighbourhoods cover (px, py), transparent votes
  * included: an upper bound on its votes. */
-static size_t
+TS_CLONE_INLINE size_t
 cover_count (const TsAxisGrid *gx, const TsAxisGrid *gy, size_t px, size_t py)
 {
   size_t across = 0, down = 0;
