@@ -3,6 +3,7 @@
 #include "fft.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -94,41 +95,65 @@ ts_fft_1d (double complex *data, size_t n, bool inverse)
   return true;
 }
 
+/* Every row, then every column (through a contiguous copy: strided
+ * butterflies would touch a new cache line at every access). Each line
+ * is one thread's transform, so any number of threads gives the same
+ * values. */
+static bool
+transform_lines (double complex *data, size_t width, size_t height,
+                 const double complex *row_twiddle, const double complex *column_twiddle,
+                 bool inverse)
+{
+  int failed = 0;
+  /* Threads pay off from about 128 x 128 values. */
+  bool threads = width * height >= 16384;
+
+#pragma omp parallel if (threads)
+  {
+    double complex *column = malloc (height * sizeof *column);
+    if (!column)
+      {
+#pragma omp atomic write
+        failed = 1;
+      }
+#pragma omp for schedule(static)
+    for (ptrdiff_t y = 0; y < (ptrdiff_t) height; y++)
+      transform (data + (size_t) y * width, width, row_twiddle, inverse);
+#pragma omp for schedule(static)
+    for (ptrdiff_t x = 0; x < (ptrdiff_t) width; x++)
+      {
+        if (!column)
+          continue;
+        for (size_t y = 0; y < height; y++)
+          column[y] = data[y * width + (size_t) x];
+        transform (column, height, column_twiddle, inverse);
+        for (size_t y = 0; y < height; y++)
+          data[y * width + (size_t) x] = column[y];
+      }
+    free (column);
+  }
+  return !failed;
+}
+
 bool
 ts_fft_2d (double complex *data, size_t width, size_t height, bool inverse)
 {
-  double complex *row_twiddle, *column_twiddle, *column;
+  double complex *row_twiddle, *column_twiddle;
   bool ok;
 
   if (!is_power_of_two (width) || !is_power_of_two (height))
     return false;
   row_twiddle = new_twiddles (width);
   column_twiddle = new_twiddles (height);
-  column = malloc (height * sizeof *column);
-  ok = row_twiddle && column_twiddle && column;
-  if (ok)
+  ok = row_twiddle && column_twiddle
+       && transform_lines (data, width, height, row_twiddle, column_twiddle, inverse);
+  if (ok && inverse)
     {
-      for (size_t y = 0; y < height; y++)
-        transform (data + y * width, width, row_twiddle, inverse);
-      /* Columns go through a contiguous copy: strided butterflies would
-       * touch a new cache line at every access. */
-      for (size_t x = 0; x < width; x++)
-        {
-          for (size_t y = 0; y < height; y++)
-            column[y] = data[y * width + x];
-          transform (column, height, column_twiddle, inverse);
-          for (size_t y = 0; y < height; y++)
-            data[y * width + x] = column[y];
-        }
-      if (inverse)
-        {
-          double scale = 1.0 / ((double) width * (double) height);
-          for (size_t i = 0; i < width * height; i++)
-            data[i] *= scale;
-        }
+      double scale = 1.0 / ((double) width * (double) height);
+      for (size_t i = 0; i < width * height; i++)
+        data[i] *= scale;
     }
   free (row_twiddle);
   free (column_twiddle);
-  free (column);
   return ok;
 }
