@@ -23,7 +23,7 @@ typedef struct
  * compared level j = 1, 2, the (2 rc + 1)^2 patch around p >> j at level
  * l + j (rc = (r + 1) / 2, coordinates clamped). Its squared Euclidean
  * distance ranks the candidates. Defaults chosen by measurement (recall vs.
- * brute force against time): 5, 5, 3, 2, 16, 8, 0, 1. */
+ * brute force against time): 5, 5, 3, 2, 16, 4, 8, 0, 1. */
 typedef struct
 {
   size_t patch_size;      /* odd neighbourhood side compared at each level  */
@@ -36,6 +36,8 @@ typedef struct
                              0 = search with exact distances (slow)         */
   size_t rerank;          /* with PCA: the best k + rerank by projected
                              distance are re-ranked by exact distance       */
+  size_t rerank_coarsest; /* the same at the coarsest level, whose brute
+                             force ranks far centres by projection too     */
   size_t parent_matches;  /* use at most this many of the parent's matches
                              (best first) as sources; 0 = all               */
   size_t propagation;     /* passes re-ranking the neighbours' matches,
