@@ -415,6 +415,10 @@ synthesize_level (Run *run, Work *w, size_t level)
 
   ts_schedule_level (params, level, w->pyramid.levels, ex->width, ex->height, &plan);
   ts_mrpm_options_init (&options);
+  /* Fewer re-ranks were measured on plain synthesis only; under a
+   * caller's guides style transfer followed the target less closely. */
+  if (params->guides)
+    options.rerank = options.rerank_coarsest;
   run->stage = "matching exemplar";
   status = ts_mrpm_level (&w->pyramid, level, level + 1 < w->pyramid.levels ? &w->coarser_candidates : NULL,
                           plan.k_level, &options, &run->cancel, &w->candidates);
