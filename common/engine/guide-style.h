@@ -19,11 +19,12 @@
  * the tone's spread does. Without it a picture's even areas took the
  * exemplar's even parts, and the grain that darkens or lightens its
  * surroundings (a rock's joints, a granite's veins) was left out. On
- * the tuning half of benchmarks/style-transfer.sh (192², seed 1),
- * sharpness against the exemplar 0.92-0.96 at 2 (0.63-0.96 without the
- * channel, 0.83-0.97 at 1), blurred-lightness correlation 0.916-0.945
- * (0.943-0.964 without). */
-#define TS_STYLE_CONTRAST_WEIGHT 2.0
+ * the tuning half of benchmarks/style-transfer.sh (192², seed 1), the
+ * guide's cost read at the neighbourhood's centre: sharpness against
+ * the exemplar 0.92-0.96 and blurred-lightness correlation 0.926-0.949
+ * at 4, against 0.91-0.94 and 0.925-0.955 at 3, 0.87-0.92 and
+ * 0.933-0.958 at 2 (0.63-0.96 and 0.943-0.964 without the channel). */
+#define TS_STYLE_CONTRAST_WEIGHT 4.0
 /* The target's contrast is the exemplar's mean at the target's tone, in
  * this many steps of the exemplar's tones: fine enough to follow how
  * grain changes with the tone, coarse enough that each step holds many

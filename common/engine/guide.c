@@ -331,6 +331,7 @@ ts_guide_level_init (const TsGuidePyramid *guides, size_t level, const TsImage *
                   : guides->style && level == 0 ? TS_STYLE_FINEST_PROPOSALS : TS_GUIDE_PROPOSALS;
   out->channels = guides->channels;
   out->bin_channels = guides->bin_channels;
+  out->centre_only = guides->lattice || guides->style;
   /* A disagreeing guide pixel costs `weight` times the expected squared
    * difference of two unrelated texture pixels (twice the variance);
    * value differences are counted in the same units through the guide's
@@ -520,9 +521,9 @@ ts_guide_query_gather (TsGuideQuery *q, ptrdiff_t cx, ptrdiff_t cy, bool wrap_x,
   ptrdiff_t r = (ptrdiff_t) q->radius;
   size_t i = 0;
 
-  if (q->level->lattice)
+  if (q->level->centre_only)
     {
-      /* ts_guide_cost reads a lattice guide's centre alone */
+      /* ts_guide_cost reads a lattice or style guide's centre alone */
       memcpy (q->values + (q->radius * q->patch + q->radius) * q->level->channels,
               ts_image_pixel (&t->value, (size_t) cx, (size_t) cy),
               q->level->channels * sizeof (float));

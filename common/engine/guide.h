@@ -35,9 +35,10 @@
  * votes keep them, and at the finest level a strong guide would pick
  * the grain by its tone. The finest weight was chosen on the tuning
  * half of benchmarks/style-transfer.sh before the guide had a contrast
- * channel; the coarse weight, doubled with it, wins back the layout the
- * contrast takes (test-guided's case, seeds 1-8: blurred-lightness
- * correlation 0.902-0.914 from 0.889-0.909 at 2). */
+ * channel; the coarse weight, doubled with it, won back the layout the
+ * contrast took while the cost read the whole neighbourhood
+ * (test-guided's case, seeds 1-8: blurred-lightness correlation
+ * 0.902-0.914 from 0.889-0.909 at 2). */
 #define TS_STYLE_FINEST_WEIGHT 0.25
 #define TS_STYLE_COARSE_WEIGHT 4.0
 #define TS_STYLE_VOTE_SHARPNESS (2.0 * TS_GUIDE_VOTE_SHARPNESS)
@@ -87,6 +88,7 @@ typedef struct
   bool     lattice;     /* see TsGuidePyramid */
   size_t   channels;    /* of a value guide */
   size_t   bin_channels; /* see TsGuidePyramid */
+  bool     centre_only; /* the cost reads the neighbourhood's centre alone */
   float    cost;        /* per disagreeing label, or per squared value unit */
   size_t   bins;
   float    bin_low, bin_scale;
@@ -180,11 +182,13 @@ ts_guide_cost (const TsGuideQuery *q, size_t qx, size_t qy, float bound)
         }
       return sum;
     }
-  if (g->lattice)
+  if (g->centre_only)
     {
-      /* Phases grow alike over the target and the exemplar, so their
-       * difference is the same at every pixel of the neighbourhood: the
-       * centre's, p^2 times. */
+      /* A lattice's phases grow alike over the target and the exemplar,
+       * so their difference is the same at every pixel of the
+       * neighbourhood; a style guide is blurred as wide as the
+       * neighbourhood, so its centre stands for it: the centre's
+       * difference, p^2 times. */
       size_t centre = q->radius * p + q->radius;
       return g->cost * (float) (p * p) *
              ts_guide_floats_ssd (q->values + centre * g->channels,
