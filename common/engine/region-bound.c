@@ -41,6 +41,15 @@ ts_region_bound_free (TsRegionBound *bound)
   bound->queue = NULL;
 }
 
+/* Link bits, set per pass before the regions are labelled: the pixel
+ * continues its copy into its right / lower neighbour (across the edge
+ * along a wrapping axis). A step left or up is the neighbour's link. */
+enum
+{
+  LINK_RIGHT = 4,
+  LINK_DOWN  = 8
+};
+
 /* True if output pixel q, one step (dx, dy) from p, continues p's copy. */
 static inline bool
 continues (const int32_t *source, size_t p, size_t q, int dx, int dy, size_t exemplar_width)
@@ -56,16 +65,38 @@ continues (const int32_t *source, size_t p, size_t q, int dx, int dy, size_t exe
          && (ptrdiff_t) ((size_t) b / exemplar_width) - (ptrdiff_t) ((size_t) a / exemplar_width) == dy;
 }
 
+/* Every pixel's links, on all threads (the labelling after it is serial:
+ * it only tests these bits). Clears the other flags too. */
+static void
+set_links (uint8_t *flags, const int32_t *source, size_t w, size_t h, size_t exemplar_width,
+           bool wrap_x, bool wrap_y)
+{
+#pragma omp parallel for schedule(static)
+  for (size_t y = 0; y < h; y++)
+    {
+      size_t below = y + 1 < h ? y + 1 : 0;
+      bool down = y + 1 < h || wrap_y;
+      for (size_t x = 0; x < w; x++)
+        {
+          size_t p = y * w + x, right = x + 1 < w ? x + 1 : 0;
+          uint8_t links = 0;
+          if ((x + 1 < w || wrap_x) && continues (source, p, y * w + right, 1, 0, exemplar_width))
+            links |= LINK_RIGHT;
+          if (down && continues (source, p, below * w + x, 0, 1, exemplar_width))
+            links |= LINK_DOWN;
+          flags[p] = links;
+        }
+    }
+}
+
 void
 ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exemplar_width,
                       bool wrap_x, bool wrap_y)
 {
   size_t w = bound->width, h = bound->height, n = w * h;
   uint8_t *flags = bound->flags;
-  static const int steps[4][2] = { { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } };
 
-  for (size_t p = 0; p < n; p++)
-    flags[p] = 0;
+  set_links (flags, source, w, h, exemplar_width, wrap_x, wrap_y);
   for (size_t first = 0; first < n; first++)
     {
       size_t head = 0, tail = 0;
@@ -76,32 +107,23 @@ ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exempl
       while (head < tail)
         {
           size_t p = bound->queue[head++], x = p % w, y = p / w;
+          size_t left = (x > 0 ? x - 1 : w - 1) + y * w, up = (y > 0 ? y - 1 : h - 1) * w + x;
+          /* Right, left, down, up: the order fixes which pixels are
+           * beyond the bound. */
+          size_t next[4] = { (x + 1 < w ? x + 1 : 0) + y * w, left,
+                             (y + 1 < h ? y + 1 : 0) * w + x, up };
+          bool linked[4] = { (flags[p] & LINK_RIGHT) != 0,
+                             (x > 0 || wrap_x) && (flags[left] & LINK_RIGHT),
+                             (flags[p] & LINK_DOWN) != 0,
+                             (y > 0 || wrap_y) && (flags[up] & LINK_DOWN) };
           if (head > bound->max_area)
             flags[p] |= TS_REGION_CUT;
           for (int k = 0; k < 4; k++)
-            {
-              ptrdiff_t nx = (ptrdiff_t) x + steps[k][0], ny = (ptrdiff_t) y + steps[k][1];
-              size_t q;
-              if (nx < 0 || nx >= (ptrdiff_t) w)
-                {
-                  if (!wrap_x)
-                    continue;
-                  nx = nx < 0 ? (ptrdiff_t) w - 1 : 0;
-                }
-              if (ny < 0 || ny >= (ptrdiff_t) h)
-                {
-                  if (!wrap_y)
-                    continue;
-                  ny = ny < 0 ? (ptrdiff_t) h - 1 : 0;
-                }
-              q = (size_t) ny * w + (size_t) nx;
-              if (!(flags[q] & TS_REGION_SEEN)
-                  && continues (source, p, q, steps[k][0], steps[k][1], exemplar_width))
-                {
-                  flags[q] |= TS_REGION_SEEN;
-                  bound->queue[tail++] = (uint32_t) q;
-                }
-            }
+            if (linked[k] && !(flags[next[k]] & TS_REGION_SEEN))
+              {
+                flags[next[k]] |= TS_REGION_SEEN;
+                bound->queue[tail++] = (uint32_t) next[k];
+              }
         }
     }
 }
