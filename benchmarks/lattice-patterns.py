@@ -24,6 +24,8 @@ import subprocess
 import sys
 import zlib
 
+from gegl_runs import crop_centre, quiet_runs, synthesize_seeds
+
 PATTERNS = "/usr/share/gimp/2.0/patterns"
 NEAR_REGULAR = ["pine", "recessed", "rain", "parque3", "wood3", "choc_swirl", "leaves",
                 "nops", "marble3", "wood4", "qube1", "lightning"]
@@ -73,29 +75,18 @@ def main():
     a = ap.parse_args()
     names = a.names or NEAR_REGULAR + IRREGULAR
     build = os.path.abspath(a.build)
-    plugins = subprocess.check_output(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                                      text=True).strip()
-    env = dict(os.environ, GEGL_PATH=build + "/operations:" + plugins)
     measure = os.path.join(build, "tools", "texsynth-measure")
     os.makedirs(a.out, exist_ok=True)
-    quiet = dict(env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+    quiet = quiet_runs(build)
 
     print("| pattern | size | strength | lattice, per seed | bds | copy | sharpness |")
     print("|---|---|---|---|---|---|---|")
     for name in names:
         png = os.path.join(a.out, name + ".png")
         width, height = pattern_to_png(find_pattern(name), png)
-        crop_w, crop_h = min(width, 128), min(height, 128)
         exemplar = os.path.join(a.out, name + "-exemplar.png")
-        subprocess.run(["gegl", "-i", png, "-o", exemplar, "--", "gegl:crop",
-                        "x=%d" % ((width - crop_w) // 2), "y=%d" % ((height - crop_h) // 2),
-                        "width=%d" % crop_w, "height=%d" % crop_h], **quiet)
-        results = []
-        for seed in a.seeds.split(","):
-            result = os.path.join(a.out, "%s-%s.png" % (name, seed))
-            subprocess.run(["gegl", "-i", exemplar, "-o", result, "--", "texsynth:synthesize",
-                            "width=%d" % a.size, "height=%d" % a.size, "seed=" + seed], **quiet)
-            results.append(result)
+        crop_w, crop_h = crop_centre(png, width, height, exemplar, quiet)
+        results = synthesize_seeds(exemplar, a.out, name, a.size, a.seeds, quiet)
         out = subprocess.run([measure, "--json", "--lattice", exemplar] + results,
                              capture_output=True, text=True, check=True).stdout
         figures = [json.loads(line) for line in out.splitlines() if line.startswith("{")]

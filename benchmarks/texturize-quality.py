@@ -27,6 +27,8 @@ import subprocess
 import sys
 import tempfile
 
+from gegl_runs import crop_centre, quiet_runs, synthesize_seeds
+
 CRITICAL_CHUNKS = (b"IHDR", b"PLTE", b"IDAT", b"IEND", b"tRNS")
 
 
@@ -94,11 +96,8 @@ def main():
     ap.add_argument("--out", default="texturize-quality")
     a = ap.parse_args()
     build = os.path.abspath(a.build)
-    plugins = subprocess.check_output(["pkg-config", "--variable=pluginsdir", "gegl-0.4"],
-                                      text=True).strip()
-    env = dict(os.environ, GEGL_PATH=build + "/operations:" + plugins)
     tool = os.path.join(build, "tools", "texsynth-measure")
-    quiet = dict(env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+    quiet = quiet_runs(build)
     files = sorted(glob.glob(os.path.join(a.exemplars, "*.png")))
     if not files:
         sys.exit("no PNG in %s" % a.exemplars)
@@ -111,11 +110,8 @@ def main():
     for path in files:
         name = os.path.basename(path)[:-4]
         width, height = png_size(path)
-        crop_w, crop_h = min(width, 128), min(height, 128)
         crop = os.path.abspath(os.path.join(crop_dir, name + ".png"))
-        subprocess.run(["gegl", "-i", path, "-o", crop, "--", "gegl:crop",
-                        "x=%d" % ((width - crop_w) // 2), "y=%d" % ((height - crop_h) // 2),
-                        "width=%d" % crop_w, "height=%d" % crop_h], **quiet)
+        crop_centre(path, width, height, crop, quiet)
         strip_colour_chunks(crop)
         crops.append((name, crop))
     if not a.texturize_dir:
@@ -126,12 +122,7 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|")
     ratios = []
     for name, crop in crops:
-        results = []
-        for seed in a.seeds.split(","):
-            result = os.path.join(a.out, "%s-%s.png" % (name, seed))
-            subprocess.run(["gegl", "-i", crop, "-o", result, "--", "texsynth:synthesize",
-                            "width=%d" % a.size, "height=%d" % a.size, "seed=" + seed], **quiet)
-            results.append(result)
+        results = synthesize_seeds(crop, a.out, name, a.size, a.seeds, quiet)
         ours = measure(tool, crop, results)
         theirs = measure(tool, crop, [os.path.join(tex_dir, name + ".png")])[0]
         bds = statistics.median(f["coherence"] + f["completeness"] for f in ours)
