@@ -42,8 +42,8 @@ ts_region_bound_free (TsRegionBound *bound)
 }
 
 /* Link bits, set per pass before the regions are labelled: the pixel
- * continues its copy into its right / lower neighbour (across the edge
- * along a wrapping axis). A step left or up is the neighbour's link. */
+ * continues its copy into its right / lower neighbour. A step left or
+ * up is the neighbour's link. */
 enum
 {
   LINK_RIGHT = 4,
@@ -68,35 +68,29 @@ continues (const int32_t *source, size_t p, size_t q, int dx, int dy, size_t exe
 /* Every pixel's links, on all threads (the labelling after it is serial:
  * it only tests these bits). Clears the other flags too. */
 static void
-set_links (uint8_t *flags, const int32_t *source, size_t w, size_t h, size_t exemplar_width,
-           bool wrap_x, bool wrap_y)
+set_links (uint8_t *flags, const int32_t *source, size_t w, size_t h, size_t exemplar_width)
 {
 #pragma omp parallel for schedule(static)
   for (size_t y = 0; y < h; y++)
-    {
-      size_t below = y + 1 < h ? y + 1 : 0;
-      bool down = y + 1 < h || wrap_y;
-      for (size_t x = 0; x < w; x++)
-        {
-          size_t p = y * w + x, right = x + 1 < w ? x + 1 : 0;
-          uint8_t links = 0;
-          if ((x + 1 < w || wrap_x) && continues (source, p, y * w + right, 1, 0, exemplar_width))
-            links |= LINK_RIGHT;
-          if (down && continues (source, p, below * w + x, 0, 1, exemplar_width))
-            links |= LINK_DOWN;
-          flags[p] = links;
-        }
-    }
+    for (size_t x = 0; x < w; x++)
+      {
+        size_t p = y * w + x;
+        uint8_t links = 0;
+        if (x + 1 < w && continues (source, p, p + 1, 1, 0, exemplar_width))
+          links |= LINK_RIGHT;
+        if (y + 1 < h && continues (source, p, p + w, 0, 1, exemplar_width))
+          links |= LINK_DOWN;
+        flags[p] = links;
+      }
 }
 
 void
-ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exemplar_width,
-                      bool wrap_x, bool wrap_y)
+ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exemplar_width)
 {
   size_t w = bound->width, h = bound->height, n = w * h;
   uint8_t *flags = bound->flags;
 
-  set_links (flags, source, w, h, exemplar_width, wrap_x, wrap_y);
+  set_links (flags, source, w, h, exemplar_width);
   for (size_t first = 0; first < n; first++)
     {
       size_t head = 0, tail = 0;
@@ -107,15 +101,14 @@ ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exempl
       while (head < tail)
         {
           size_t p = bound->queue[head++], x = p % w, y = p / w;
-          size_t left = (x > 0 ? x - 1 : w - 1) + y * w, up = (y > 0 ? y - 1 : h - 1) * w + x;
           /* Right, left, down, up: the order fixes which pixels are
-           * beyond the bound. */
-          size_t next[4] = { (x + 1 < w ? x + 1 : 0) + y * w, left,
-                             (y + 1 < h ? y + 1 : 0) * w + x, up };
+           * beyond the bound. A link is only set towards a neighbour
+           * inside the level, so `next` is read only where linked. */
+          size_t next[4] = { p + 1, p - 1, p + w, p - w };
           bool linked[4] = { (flags[p] & LINK_RIGHT) != 0,
-                             (x > 0 || wrap_x) && (flags[left] & LINK_RIGHT),
+                             x > 0 && (flags[p - 1] & LINK_RIGHT),
                              (flags[p] & LINK_DOWN) != 0,
-                             (y > 0 || wrap_y) && (flags[up] & LINK_DOWN) };
+                             y > 0 && (flags[p - w] & LINK_DOWN) };
           if (head > bound->max_area)
             flags[p] |= TS_REGION_CUT;
           for (int k = 0; k < 4; k++)

@@ -32,11 +32,11 @@ TsStatus ts_region_bound_init (TsRegionBound *bound, size_t width, size_t height
 void     ts_region_bound_free (TsRegionBound *bound);
 
 /* Labels the coherent regions of `source` (4-neighbours whose sources are
- * exemplar neighbours in the same direction; across the edges along a
- * wrapping axis) and flags as cut every pixel of a region beyond the
- * first max_area pixels reached breadth-first from its first pixel. */
-void     ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exemplar_width,
-                               bool wrap_x, bool wrap_y);
+ * exemplar neighbours in the same direction; the level does not wrap, as
+ * tileable results take no bound) and flags as cut every pixel of a
+ * region beyond the first max_area pixels reached breadth-first from its
+ * first pixel. */
+void     ts_region_bound_mark (TsRegionBound *bound, const int32_t *source, size_t exemplar_width);
 
 static inline bool
 ts_region_bound_is_cut (const TsRegionBound *bound, size_t pixel)

@@ -287,8 +287,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
           if (state->penalty)
             ts_occurrence_update (&occurrence, usage, pixels, pass->patch, state->opaque_count);
           if (state->region_bound)
-            ts_region_bound_mark (&region_bound, state->source, state->exemplar->width,
-                                  state->wrap_x, state->wrap_y);
+            ts_region_bound_mark (&region_bound, state->source, state->exemplar->width);
           matches = malloc (gx.centres * gy.centres * sizeof (TsMatch));
           status = matches ? ts_mstep (state, &gx, &gy, pass, plan->k_use, stream, matches)
                            : TS_ERROR_OUT_OF_MEMORY;
