@@ -95,12 +95,15 @@ target_contrast (const TsImage *exemplar, const TsImage *ex_guide, TsImage *targ
         low = fminf (low, e[i * TS_CHANNELS]);
         high = fmaxf (high, e[i * TS_CHANNELS]);
       }
-  double step = high > low ? (double) (high - low) / (TS_STYLE_TONE_STEPS - 1) : 1.0;
+  double range = (double) high - (double) low;
+  double step = range > 0.0 && isfinite (range) ? range / (TS_STYLE_TONE_STEPS - 1) : 1.0;
   for (size_t i = 0; i < ex_n; i++)
     if (exemplar->pixels[i * TS_CHANNELS + 3] > 0.0f)
       {
         /* Each pixel counts towards its two nearest steps, by nearness. */
-        double at = (e[i * TS_CHANNELS] - low) / step;
+        /* Clamped before the cast: extreme values may overflow to
+         * infinities, and a cast out of range is undefined. */
+        double at = fmin (fmax ((e[i * TS_CHANNELS] - low) / step, 0.0), TS_STYLE_TONE_STEPS - 1);
         size_t k = (size_t) at < TS_STYLE_TONE_STEPS - 1 ? (size_t) at : TS_STYLE_TONE_STEPS - 2;
         double f = fmin (fmax (at - (double) k, 0.0), 1.0);
         sum[k] += (1.0 - f) * e[i * TS_CHANNELS + 1];

@@ -6,6 +6,7 @@
 #include "test-util.h"
 #include "image-io.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -237,6 +238,54 @@ test_style_transfer (void)
   free (sources);
 }
 
+/* Style transfer from an exemplar of extreme values (the largest
+ * floats, infinities, NaN) and a target of the largest finite floats:
+ * the guides built from them must neither overflow into undefined casts
+ * (the sanitized run checks) nor give anything but finite pixels or a
+ * refusal with a message. */
+static void
+test_extreme_style (void)
+{
+  const size_t side = 24, out_side = 40;
+  const float extremes[] = { FLT_MAX, -FLT_MAX, INFINITY, -INFINITY, NAN, 50.0f };
+  float *target = malloc (out_side * out_side * sizeof (float));
+  TsImage ex = { side, side, malloc (side * side * TS_CHANNELS * sizeof (float)) };
+  TsImage out = { out_side, out_side, malloc (out_side * out_side * TS_CHANNELS * sizeof (float)) };
+  TsParams p;
+  TsError error = { 0 };
+  TsGuides guides;
+  TsStatus status;
+
+  for (size_t i = 0; i < side * side; i++)
+    {
+      float *px = ex.pixels + i * TS_CHANNELS;
+      px[0] = extremes[i * 7 % 6];
+      px[1] = px[2] = 0.0f;
+      px[3] = 1.0f;
+    }
+  for (size_t i = 0; i < out_side * out_side; i++)
+    target[i] = i * 13 % 3 == 0 ? FLT_MAX : -FLT_MAX;
+  ts_guides_init (&guides);
+  guides.target_guide = target;
+  ts_params_init (&p);
+  p.output_width = p.output_height = out_side;
+  p.guides = &guides;
+  status = ts_synthesize (&p, &ex, &out, NULL, NULL, &error);
+  if (status == TS_OK)
+    {
+      bool finite = true;
+      for (size_t i = 0; i < out_side * out_side * TS_CHANNELS; i++)
+        finite = finite && isfinite (out.pixels[i]);
+      CHECK (finite, "style transfer from extreme values gives finite pixels");
+    }
+  else
+    CHECK (error.message[0] != '\0', "style transfer from extreme values is refused with a message");
+  printf ("extreme style transfer: %s\n", status == TS_OK ? "finite result" : error.message);
+  free (ex.pixels);
+  free (out.pixels);
+  free (target);
+}
+
 /* The same seed gives the same sources on one thread and on two. */
 static void
 test_threads (void)
@@ -334,6 +383,7 @@ int
 main (void)
 {
   test_bad_guides ();
+  test_extreme_style ();
   test_texture_by_numbers ();
   test_style_transfer ();
   test_threads ();
