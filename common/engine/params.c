@@ -3,6 +3,7 @@
 #include "texsynth.h"
 #include "guide-params.h"
 #include "image.h"
+#include "region-bound.h"
 #include "schedule.h"
 #include "error.h"
 #include "i18n.h"
@@ -175,7 +176,7 @@ estimate_bytes (const TsParams *params, const TsImage *exemplar, int threads)
    * sources (1) and sparse matches (2), and the host's converted copy of
    * the result (16, the ops' GEGL buffer). */
   bytes += out * (16.0 + 4.0 + 1.0 + 2.0 + 16.0);
-  if (!params->initial_source && !params->guides && !params->wrap_x && !params->wrap_y)
+  if (ts_region_bound_applies (params))
     bytes += out * 5.0;                                /* coherent regions' flags and queue */
   if (params->wrap_x || params->wrap_y)
     bytes += out * 4.0;                                /* seam disagreement   */

@@ -5,6 +5,7 @@
 #define TS_REGION_BOUND_H
 
 #include "error.h"
+#include "texsynth.h"
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -24,6 +25,18 @@ typedef struct
   size_t    width, height;
   size_t    max_area; /* output pixels a coherent region may cover */
 } TsRegionBound;
+
+/* Whether a synthesis with `params` bounds its copies: only where the
+ * engine lays out the whole result. An initial map or a caller's guide
+ * lays it out instead; a tileable result, with no free border, grows
+ * larger coarse regions that the bound would cut at a high price in
+ * coherence (median 1.21 instead of 1.03 on the bundled exemplars),
+ * while its copies stay below half the exemplar. */
+static inline bool
+ts_region_bound_applies (const TsParams *params)
+{
+  return !params->initial_source && !params->guides && !params->wrap_x && !params->wrap_y;
+}
 
 /* A bound for an output level of width x height whose exemplar level is
  * exemplar_width x exemplar_height. */
