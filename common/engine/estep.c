@@ -148,6 +148,8 @@ collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const T
                   if (row[jx].centre < 0)
                     continue;
                   ptrdiff_t dx = tx - ts_axis_grid_centre (gx, jx);
+                  if (!ts_match_reaches (&row[jx], ew, ex->height, dx, dy))
+                    continue;
                   int32_t source = row[jx].centre + (int32_t) (dy * (ptrdiff_t) ew + dx);
                   const float *value = ex->pixels + (size_t) source * TS_CHANNELS;
                   float weight = row[jx].weight;
@@ -228,7 +230,10 @@ collect_listed (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const
               const TsMatch *row = matches + jy * gx->centres;
               for (size_t jx = jx_lo; jx <= jx_hi; jx++)
                 {
-                  if (row[jx].centre < 0)
+                  if (row[jx].centre < 0
+                      || !ts_match_reaches (&row[jx], (size_t) ew, state->exemplar->height,
+                                            tx - ts_axis_grid_centre (gx, jx),
+                                            ty - ts_axis_grid_centre (gy, jy)))
                     continue;
                   int32_t source = row[jx].centre + (int32_t) (shift - ts_axis_grid_centre (gx, jx));
                   const float *value = pixels + (size_t) source * TS_CHANNELS;

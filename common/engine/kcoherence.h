@@ -26,6 +26,11 @@ typedef struct
   float          best;
   int32_t        best_centre;
   TsGuideQuery  *guide;          /* target guide around the neighbourhood, or NULL */
+  /* Per exemplar pixel, 1 where a window centred there crosses the
+   * exemplar's border, or NULL when every centre tried keeps its window
+   * inside. */
+  const uint8_t *clipped;
+  size_t         margin;         /* least distance of a centre from the border */
 } TsSearch;
 
 /* Sum of squared differences against the exemplar neighbourhood centred
@@ -50,8 +55,46 @@ ts_search_ssd_bounded (const TsSearch *s, size_t index, float bound)
   return sum;
 }
 
-/* Tries the exemplar neighbourhood centred at pixel `index`, a centre
- * whose window lies inside the exemplar. */
+/* ts_search_ssd_bounded for a window that crosses the exemplar's border:
+ * its outside part compared with the exemplar mirrored at the border, so
+ * that a shape the border cuts is matched as continuing, not as ending
+ * in a straight edge. */
+TS_OUT_OF_LINE float
+ts_search_ssd_clipped (const TsSearch *s, size_t index, float bound)
+{
+  size_t w = s->exemplar->width, h = s->exemplar->height, p = s->patch;
+  ptrdiff_t r = (ptrdiff_t) s->radius, x = (ptrdiff_t) (index % w), y = (ptrdiff_t) (index / w);
+  /* The columns [lo, hi) of the window lie inside the exemplar. */
+  size_t lo = x >= r ? 0 : (size_t) (r - x);
+  size_t hi = x + r < (ptrdiff_t) w ? p : (size_t) ((ptrdiff_t) w - x + r);
+  const float *a = s->neighbourhood;
+  float sum = 0.0f;
+
+  for (ptrdiff_t dy = -r; dy <= r; dy++, a += p * TS_CHANNELS)
+    {
+      const float *row = s->exemplar->pixels + ts_mirror (y + dy, h) * w * TS_CHANNELS;
+      sum += ts_pixels_ssd (a + lo * TS_CHANNELS, row + (size_t) (x - r + (ptrdiff_t) lo) * TS_CHANNELS,
+                            hi - lo);
+      for (size_t i = 0; i < lo; i++)
+        sum += ts_pixels_ssd (a + i * TS_CHANNELS, row + ts_mirror (x - r + (ptrdiff_t) i, w) * TS_CHANNELS, 1);
+      for (size_t i = hi; i < p; i++)
+        sum += ts_pixels_ssd (a + i * TS_CHANNELS, row + ts_mirror (x - r + (ptrdiff_t) i, w) * TS_CHANNELS, 1);
+      if (sum >= bound)
+        return sum;
+    }
+  return sum;
+}
+
+TS_CLONE_INLINE float
+ts_search_ssd (const TsSearch *s, size_t index, float bound)
+{
+  if (s->clipped && s->clipped[index])
+    return ts_search_ssd_clipped (s, index, bound);
+  return ts_search_ssd_bounded (s, index, bound);
+}
+
+/* Tries the exemplar neighbourhood centred at pixel `index`, at least
+ * s->margin from the border. */
 TS_CLONE_INLINE void
 ts_search_consider_centre (TsSearch *s, size_t index)
 {
@@ -72,10 +115,10 @@ ts_search_consider_centre (TsSearch *s, size_t index)
         }
       if (extra >= s->best)
         return;
-      d = extra + ts_search_ssd_bounded (s, index, s->best - extra);
+      d = extra + ts_search_ssd (s, index, s->best - extra);
     }
   else
-    d = ts_search_ssd_bounded (s, index, s->best);
+    d = ts_search_ssd (s, index, s->best);
   if (d < s->best)
     {
       s->best = d;
@@ -83,12 +126,13 @@ ts_search_consider_centre (TsSearch *s, size_t index)
     }
 }
 
-/* Tries the exemplar neighbourhood centred at (x, y), clamped inside. */
+/* Tries the exemplar neighbourhood centred at (x, y), clamped to the
+ * margin. */
 static inline void
 ts_search_consider (TsSearch *s, ptrdiff_t x, ptrdiff_t y)
 {
   size_t w = s->exemplar->width, h = s->exemplar->height;
-  size_t qx = ts_clamp_centre (x, w, s->radius), qy = ts_clamp_centre (y, h, s->radius);
+  size_t qx = ts_clamp_centre (x, w, s->margin), qy = ts_clamp_centre (y, h, s->margin);
   ts_search_consider_centre (s, qy * w + qx);
 }
 

@@ -52,9 +52,22 @@ typedef struct
 typedef struct
 {
   int32_t centre;   /* matched exemplar centre (index), -1 if none   */
-  float   distance; /* sum of squared differences                    */
   float   weight;   /* robust E-step weight, |x - z|^(r - 2), r = 0.8  */
+  bool    clipped;  /* its window crosses the exemplar's border: votes
+                       from outside it are skipped                     */
 } TsMatch;
+
+/* False if the match's window, offset by (dx, dy) from its centre, falls
+ * outside the exemplar (only a clipped window can). */
+static inline bool
+ts_match_reaches (const TsMatch *m, size_t ew, size_t eh, ptrdiff_t dx, ptrdiff_t dy)
+{
+  if (!m->clipped)
+    return true;
+  ptrdiff_t x = (ptrdiff_t) ((size_t) m->centre % ew) + dx;
+  ptrdiff_t y = (ptrdiff_t) ((size_t) m->centre / ew) + dy;
+  return x >= 0 && y >= 0 && x < (ptrdiff_t) ew && y < (ptrdiff_t) eh;
+}
 
 TsStatus ts_axis_grid_init (TsAxisGrid *grid, size_t n, size_t radius, size_t spacing,
                             size_t offset, bool wrap);

@@ -66,6 +66,8 @@ typedef struct
   int32_t       *x, *y;
   int32_t       *lists;   /* k entries per exemplar pixel, -1 after the last */
   size_t         k;
+  size_t         margin;  /* least distance of a proposed centre from the border */
+  uint8_t       *clipped; /* per pixel: 1 if its window crosses the border */
 } Proposals;
 
 static void
@@ -74,19 +76,22 @@ proposals_free (Proposals *p)
   free (p->x);
   free (p->y);
   free (p->lists);
+  free (p->clipped);
 }
 
 static TsStatus
 proposals_init (Proposals *p, const TsImage *ex, const TsCandidateSet *cands, size_t k_use,
-                size_t radius)
+                size_t radius, size_t margin)
 {
   size_t w = ex->width, h = ex->height, n = w * h;
 
   p->k = k_use < cands->k ? k_use : cands->k;
+  p->margin = margin;
   p->x = malloc (n * sizeof (int32_t));
   p->y = malloc (n * sizeof (int32_t));
   p->lists = malloc ((n * p->k > 0 ? n * p->k : 1) * sizeof (int32_t));
-  if (!p->x || !p->y || !p->lists)
+  p->clipped = malloc (n);
+  if (!p->x || !p->y || !p->lists || !p->clipped)
     {
       proposals_free (p);
       return TS_ERROR_OUT_OF_MEMORY;
@@ -98,12 +103,14 @@ proposals_init (Proposals *p, const TsImage *ex, const TsCandidateSet *cands, si
       int32_t *out = p->lists + (size_t) i * p->k;
       size_t j = 0;
 
-      p->x[i] = (int32_t) ((size_t) i % w);
-      p->y[i] = (int32_t) ((size_t) i / w);
+      size_t x = (size_t) i % w, y = (size_t) i / w;
+      p->x[i] = (int32_t) x;
+      p->y[i] = (int32_t) y;
+      p->clipped[i] = x < radius || y < radius || x + radius >= w || y + radius >= h;
       for (; j < p->k && list[j] >= 0; j++)
         {
-          size_t qx = ts_clamp_centre ((ptrdiff_t) ((size_t) list[j] % w), w, radius);
-          size_t qy = ts_clamp_centre ((ptrdiff_t) ((size_t) list[j] / w), h, radius);
+          size_t qx = ts_clamp_centre ((ptrdiff_t) ((size_t) list[j] % w), w, margin);
+          size_t qy = ts_clamp_centre ((ptrdiff_t) ((size_t) list[j] / w), h, margin);
           out[j] = (int32_t) (qy * w + qx);
         }
       for (; j < p->k; j++)
@@ -123,8 +130,8 @@ propose (TsSearch *s, const Proposals *p, int32_t source, ptrdiff_t dx, ptrdiff_
   size_t ly = cy < 0 ? 0 : (cy >= (ptrdiff_t) h ? h - 1 : (size_t) cy);
   const int32_t *list = p->lists + (ly * w + lx) * p->k;
 
-  ts_search_consider_centre (s, ts_clamp_centre (cy, h, s->radius) * w
-                                + ts_clamp_centre (cx, w, s->radius));
+  ts_search_consider_centre (s, ts_clamp_centre (cy, h, p->margin) * w
+                                + ts_clamp_centre (cx, w, p->margin));
   for (size_t i = 0; i < p->k && list[i] >= 0; i++)
     ts_search_consider_centre (s, (size_t) list[i]);
 }
@@ -219,11 +226,23 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
   int failed = 0;
   Proposals proposals;
 
-  if (proposals_init (&proposals, ex, state->candidates, k_use, radius) != TS_OK)
+  /* Centres anywhere in the exemplar, the part of a window outside it
+   * compared with the exemplar mirrored, and votes only from the part
+   * inside: with whole windows only, the exemplar's border band is only
+   * ever copied as the rim of a window and is used far below its share
+   * (completeness and variety suffer most on small exemplars). Guided
+   * levels keep whole windows: a label or value guide is compared window
+   * by window, and under a lattice guide clipped windows broke the
+   * courses (docs/benchmarks.md, "Windows over the exemplar's border"). */
+  size_t margin = state->guide ? radius : 0;
+
+  if (proposals_init (&proposals, ex, state->candidates, k_use, radius, margin) != TS_OK)
     return TS_ERROR_OUT_OF_MEMORY;
 #pragma omp parallel
   {
-    TsSearch s = { ex, pass->patch, radius, NULL, state->penalty, NULL, 0, 0.0f, -1, NULL };
+    TsSearch s = { .exemplar = ex, .patch = pass->patch, .radius = radius,
+                   .penalty = state->penalty, .best_centre = -1,
+                   .clipped = margin < radius ? proposals.clipped : NULL, .margin = margin };
     float *neighbourhood = malloc (pass->patch * pass->patch * TS_CHANNELS * sizeof (float));
     s.stamp = calloc (ex_pixels, sizeof (uint32_t));
     uint32_t *proposed = calloc (ex_pixels, sizeof (uint32_t));
@@ -251,7 +270,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         if (state->preserve && frozen (state, cx, cy, radius))
           {
             matches[i].centre = -1;
-            matches[i].distance = 0.0f;
+            matches[i].clipped = false;
             matches[i].weight = 0.0f;
             continue;
           }
@@ -269,7 +288,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         if (s.guide)
           propose_by_guide (&s, &proposals, state, seed_stream, cx, cy, (size_t) i);
         matches[i].centre = s.best_centre;
-        matches[i].distance = s.best;
+        matches[i].clipped = s.clipped && s.best_centre >= 0 && s.clipped[s.best_centre];
         /* |x - z|^(r-2) on the per-pixel RMS distance; the epsilon bounds
          * the weight of perfect matches. */
         matches[i].weight = powf (s.best / pixels_per_patch + 1e-2f,

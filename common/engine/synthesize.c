@@ -125,6 +125,30 @@ random_blocks (TsLevelState *state, const TsParams *params, size_t level, size_t
       }
 }
 
+/* The child (cx, cy) of the coarser exemplar pixel `parent`, or the
+ * first opaque one of its children if that one is transparent: a pixel
+ * that no matched window reaches keeps its start, which must be a pixel
+ * the texture has. */
+static int32_t
+child_source (const TsImage *ex, int32_t parent, size_t coarser_ex_w, size_t cx, size_t cy)
+{
+  size_t px = 2 * ((size_t) parent % coarser_ex_w), py = 2 * ((size_t) parent / coarser_ex_w);
+  int32_t first = -1;
+
+  for (size_t i = 0; i < 4; i++)
+    {
+      size_t sx = px + (cx ^ (i & 1)), sy = py + (cy ^ (i >> 1));
+      sx = sx < ex->width ? sx : ex->width - 1;
+      sy = sy < ex->height ? sy : ex->height - 1;
+      int32_t s = (int32_t) (sy * ex->width + sx);
+      if (ex->pixels[(size_t) s * TS_CHANNELS + 3] > 0.0f)
+        return s;
+      if (first < 0)
+        first = s;
+    }
+  return first;
+}
+
 /* Starting sources of a level: at the coarsest level the guide's blocks
  * under a guide, else a quilt of large exemplar patches (random exemplar
  * blocks where the initial map replaces it anyway); at the others the
@@ -154,11 +178,7 @@ start_sources (TsLevelState *state, const TsParams *params, size_t level, size_t
           {
             size_t p = (size_t) y * state->width + x;
             int32_t parent = coarser[((size_t) y / 2) * coarser_w + x / 2];
-            size_t sx = 2 * ((size_t) parent % coarser_ex_w) + (x & 1);
-            size_t sy = 2 * ((size_t) parent / coarser_ex_w) + ((size_t) y & 1);
-            sx = sx < ex->width ? sx : ex->width - 1;
-            sy = sy < ex->height ? sy : ex->height - 1;
-            state->source[p] = (int32_t) (sy * ex->width + sx);
+            state->source[p] = child_source (ex, parent, coarser_ex_w, x & 1, (size_t) y & 1);
           }
     }
   if (state->preserve_source && !coarser)

@@ -128,7 +128,8 @@ ts_solid_mstep (const TsSolidLevel *level, int axis, const TsAxisGrid *gu, const
 
 #pragma omp parallel if (n >= TS_SOLID_PARALLEL_EDGE)
   {
-    TsSearch s = { ex, pass->patch, radius, NULL, NULL, NULL, 0, 0.0f, -1, NULL };
+    TsSearch s = { .exemplar = ex, .patch = pass->patch, .radius = radius, .best_centre = -1,
+                   .margin = radius };
     float *neighbourhood = malloc (pass->patch * pass->patch * TS_CHANNELS * sizeof (float));
     s.stamp = calloc (ex_pixels, sizeof (uint32_t));
     s.neighbourhood = neighbourhood;

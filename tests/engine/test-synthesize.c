@@ -191,8 +191,8 @@ test_estep (void)
     for (size_t x = 0; x < 6; x++)
       {
         matches[y * 6 + x].centre = (int32_t) ((y + 3) * 12 + x + 3);
-        matches[y * 6 + x].distance = 1.0f;
         matches[y * 6 + x].weight = 1.0f;
+        matches[y * 6 + x].clipped = false;
         sources[y * 6 + x] = -1;
       }
   /* Wrapped neighbourhoods of edge centres vote from beyond the edge. */
@@ -214,6 +214,44 @@ test_estep (void)
     }
   ts_estep (&state, &gx, &gy, matches, NULL);
   CHECK (sources[2 * 6 + 2] == 7 * 12 + 7, "the heavy votes win: source %d", sources[2 * 6 + 2]);
+  ts_axis_grid_free (&gx);
+  ts_axis_grid_free (&gy);
+  free (ex.pixels);
+}
+
+/* A window matched over the exemplar's corner votes only for the pixels
+ * whose counterparts the exemplar has: the others keep their sources. */
+static void
+test_estep_clipped (void)
+{
+  TsImage ex;
+  TsAxisGrid gx, gy;
+  TsLevelState state;
+  TsMatch matches[36];
+  int32_t sources[36];
+
+  test_noise_image (&ex, 12, 12, 4);
+  memset (&state, 0, sizeof state);
+  state.exemplar = &ex;
+  state.width = state.height = 6;
+  state.source = sources;
+  CHECK (ts_axis_grid_init (&gx, 6, 1, 1, 0, false) == TS_OK, "grid x");
+  CHECK (ts_axis_grid_init (&gy, 6, 1, 1, 0, false) == TS_OK, "grid y");
+  for (size_t i = 0; i < 36; i++)
+    {
+      matches[i] = (TsMatch) { -1, 0.0f, false };
+      sources[i] = 100;
+    }
+  /* The only match: output centre (2, 2) on exemplar pixel (0, 0). */
+  matches[2 * gx.centres + 2] = (TsMatch) { 0, 1.0f, true };
+  ts_estep (&state, &gx, &gy, matches, NULL);
+  for (size_t y = 1; y <= 3; y++)
+    for (size_t x = 1; x <= 3; x++)
+      {
+        int32_t want = (x >= 2 && y >= 2) ? (int32_t) ((y - 2) * 12 + (x - 2)) : 100;
+        CHECK (sources[y * 6 + x] == want, "pixel (%zu, %zu): source %d, expected %d", x, y,
+               sources[y * 6 + x], want);
+      }
   ts_axis_grid_free (&gx);
   ts_axis_grid_free (&gy);
   free (ex.pixels);
@@ -258,6 +296,7 @@ main (void)
 {
   test_memory_bound ();   /* first: the process's peak is lowest here */
   test_estep ();
+  test_estep_clipped ();
   test_exact_and_deterministic ();
   test_transparent_never_used ();
   test_cancel_and_errors ();
