@@ -22,12 +22,4 @@
 #define TS_CLONE_INLINE static inline
 #endif
 
-/* A rarely taken helper, kept out of line so that the hot function
- * calling it stays small enough to inline into each clone. */
-#if defined(__GNUC__)
-#define TS_OUT_OF_LINE static __attribute__ ((noinline))
-#else
-#define TS_OUT_OF_LINE static
-#endif
-
 #endif

@@ -28,8 +28,10 @@ typedef struct
   TsGuideQuery  *guide;          /* target guide around the neighbourhood, or NULL */
   /* Per exemplar pixel, 1 where a window centred there crosses the
    * exemplar's border, or NULL when every centre tried keeps its window
-   * inside. */
+   * inside; then `mirrored` is the exemplar with a margin of `radius`
+   * pixels mirrored around it. */
   const uint8_t *clipped;
+  const float   *mirrored;
   size_t         margin;         /* least distance of a centre from the border */
 } TsSearch;
 
@@ -55,32 +57,27 @@ ts_search_ssd_bounded (const TsSearch *s, size_t index, float bound)
   return sum;
 }
 
-/* ts_search_ssd_bounded for a window that crosses the exemplar's border:
- * its outside part compared with the exemplar mirrored at the border, so
- * that a shape the border cuts is matched as continuing, not as ending
- * in a straight edge. */
-TS_OUT_OF_LINE float
+/* ts_search_ssd_bounded for a window that crosses the exemplar's border,
+ * read from the exemplar mirrored beyond it (s->mirrored): a shape the
+ * border cuts is matched as continuing, not as ending in a straight
+ * edge. */
+TS_VECTOR_CLONES static float
 ts_search_ssd_clipped (const TsSearch *s, size_t index, float bound)
 {
-  size_t w = s->exemplar->width, h = s->exemplar->height, p = s->patch;
-  ptrdiff_t r = (ptrdiff_t) s->radius, x = (ptrdiff_t) (index % w), y = (ptrdiff_t) (index / w);
-  /* The columns [lo, hi) of the window lie inside the exemplar. */
-  size_t lo = x >= r ? 0 : (size_t) (r - x);
-  size_t hi = x + r < (ptrdiff_t) w ? p : (size_t) ((ptrdiff_t) w - x + r);
+  size_t w = s->exemplar->width, stride = w + 2 * s->radius, row_floats = s->patch * TS_CHANNELS;
+  /* With a margin of the radius, the window's first pixel in the mirrored
+   * image has the centre's exemplar coordinates. */
+  const float *b = s->mirrored + ((index / w) * stride + index % w) * TS_CHANNELS;
   const float *a = s->neighbourhood;
   float sum = 0.0f;
 
-  for (ptrdiff_t dy = -r; dy <= r; dy++, a += p * TS_CHANNELS)
+  for (size_t row = 0; row < s->patch; row++)
     {
-      const float *row = s->exemplar->pixels + ts_mirror (y + dy, h) * w * TS_CHANNELS;
-      sum += ts_pixels_ssd (a + lo * TS_CHANNELS, row + (size_t) (x - r + (ptrdiff_t) lo) * TS_CHANNELS,
-                            hi - lo);
-      for (size_t i = 0; i < lo; i++)
-        sum += ts_pixels_ssd (a + i * TS_CHANNELS, row + ts_mirror (x - r + (ptrdiff_t) i, w) * TS_CHANNELS, 1);
-      for (size_t i = hi; i < p; i++)
-        sum += ts_pixels_ssd (a + i * TS_CHANNELS, row + ts_mirror (x - r + (ptrdiff_t) i, w) * TS_CHANNELS, 1);
+      sum += ts_pixels_ssd (a, b, s->patch);
       if (sum >= bound)
         return sum;
+      a += row_floats;
+      b += stride * TS_CHANNELS;
     }
   return sum;
 }

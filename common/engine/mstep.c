@@ -119,6 +119,28 @@ proposals_init (Proposals *p, const TsImage *ex, const TsCandidateSet *cands, si
   return TS_OK;
 }
 
+/* The exemplar with a margin of `pad` pixels mirrored around it, where
+ * windows that cross its border read their outside part. */
+static float *
+mirror_padded (const TsImage *ex, size_t pad)
+{
+  size_t w = ex->width, h = ex->height, stride = w + 2 * pad;
+  float *out = malloc (stride * (h + 2 * pad) * TS_CHANNELS * sizeof (float));
+
+  if (!out)
+    return NULL;
+#pragma omp parallel for schedule(static) if (w * h >= 65536)
+  for (ptrdiff_t y = 0; y < (ptrdiff_t) (h + 2 * pad); y++)
+    {
+      const float *row = ex->pixels + ts_mirror (y - (ptrdiff_t) pad, h) * w * TS_CHANNELS;
+      float *dst = out + (size_t) y * stride * TS_CHANNELS;
+      for (size_t x = 0; x < stride; x++)
+        memcpy (dst + x * TS_CHANNELS, row + ts_mirror ((ptrdiff_t) x - (ptrdiff_t) pad, w) * TS_CHANNELS,
+                TS_CHANNELS * sizeof (float));
+    }
+  return out;
+}
+
 /* The exemplar pixel `source`, shifted by (-dx, -dy), as a proposed
  * centre, and the k-coherence candidates of that position. */
 TS_CLONE_INLINE void
@@ -235,14 +257,20 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
    * by window, and under a lattice guide clipped windows broke the
    * courses (docs/benchmarks.md, "Windows over the exemplar's border"). */
   size_t margin = state->guide ? radius : 0;
+  float *mirrored = margin < radius ? mirror_padded (ex, radius) : NULL;
 
-  if (proposals_init (&proposals, ex, state->candidates, k_use, radius, margin) != TS_OK)
-    return TS_ERROR_OUT_OF_MEMORY;
+  if ((margin < radius && !mirrored)
+      || proposals_init (&proposals, ex, state->candidates, k_use, radius, margin) != TS_OK)
+    {
+      free (mirrored);
+      return TS_ERROR_OUT_OF_MEMORY;
+    }
 #pragma omp parallel
   {
     TsSearch s = { .exemplar = ex, .patch = pass->patch, .radius = radius,
                    .penalty = state->penalty, .best_centre = -1,
-                   .clipped = margin < radius ? proposals.clipped : NULL, .margin = margin };
+                   .clipped = mirrored ? proposals.clipped : NULL, .mirrored = mirrored,
+                   .margin = margin };
     float *neighbourhood = malloc (pass->patch * pass->patch * TS_CHANNELS * sizeof (float));
     s.stamp = calloc (ex_pixels, sizeof (uint32_t));
     uint32_t *proposed = calloc (ex_pixels, sizeof (uint32_t));
@@ -300,6 +328,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
     ts_guide_query_free (&guide_query);
   }
   proposals_free (&proposals);
+  free (mirrored);
   if (failed)
     return TS_ERROR_OUT_OF_MEMORY;
   return ts_cancel_requested (state->cancel) ? TS_ERROR_CANCELLED : TS_OK;
