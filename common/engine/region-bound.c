@@ -50,19 +50,17 @@ enum
   LINK_DOWN  = 8
 };
 
-/* True if output pixel q, one step (dx, dy) from p, continues p's copy. */
+/* True if source b is the exemplar pixel right of source a / below it. */
 static inline bool
-continues (const int32_t *source, size_t p, size_t q, int dx, int dy, size_t exemplar_width)
+continues_right (int32_t a, int32_t b, size_t exemplar_width)
 {
-  int32_t a = source[p], b = source[q];
-  size_t ax, bx;
+  return a >= 0 && b == a + 1 && (size_t) b % exemplar_width != 0;
+}
 
-  if (a < 0 || b < 0)
-    return false;
-  ax = (size_t) a % exemplar_width;
-  bx = (size_t) b % exemplar_width;
-  return (ptrdiff_t) bx - (ptrdiff_t) ax == dx
-         && (ptrdiff_t) ((size_t) b / exemplar_width) - (ptrdiff_t) ((size_t) a / exemplar_width) == dy;
+static inline bool
+continues_down (int32_t a, int32_t b, size_t exemplar_width)
+{
+  return a >= 0 && b >= 0 && (size_t) b == (size_t) a + exemplar_width;
 }
 
 /* Every pixel's links, on all threads (the labelling after it is serial:
@@ -76,9 +74,9 @@ set_links (uint8_t *flags, const int32_t *source, size_t w, size_t h, size_t exe
       {
         size_t p = y * w + x;
         uint8_t links = 0;
-        if (x + 1 < w && continues (source, p, p + 1, 1, 0, exemplar_width))
+        if (x + 1 < w && continues_right (source[p], source[p + 1], exemplar_width))
           links |= LINK_RIGHT;
-        if (y + 1 < h && continues (source, p, p + w, 0, 1, exemplar_width))
+        if (y + 1 < h && continues_down (source[p], source[p + w], exemplar_width))
           links |= LINK_DOWN;
         flags[p] = links;
       }
