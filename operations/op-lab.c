@@ -335,9 +335,21 @@ ts_op_write_lab (GeglBuffer *buffer, const GeglRectangle *rect, const float *lab
       gegl_buffer_set (buffer, rect, 0, babl_format (TS_OP_FORMAT), lab, (gint) stride);
       return;
     }
+  Coding coding;
+  double xyz_to_rgb[9];
+  /* Our own coding converts the rows on all threads, where a large
+   * result's conversion would be a serial tail after a parallel synthesis
+   * (4096x4096, 2 threads: 0.79 -> 0.46 s); babl's fish keeps to one. */
+  gboolean own = coding_for (format, &coding) && mat_invert (coding.rgb_to_xyz, xyz_to_rgb);
+#pragma omp parallel for schedule(static) if (own && width * height >= 65536)
   for (size_t y = 0; y < height; y++)
-    ts_op_lab_to_format ((const float *) ((const guchar *) lab + y * stride), format,
-                         raw + y * width * bpp, width);
+    {
+      const float *row = (const float *) ((const guchar *) lab + y * stride);
+      if (own)
+        encode (&coding, xyz_to_rgb, row, width, raw + y * width * bpp);
+      else
+        ts_op_lab_to_format (row, format, raw + y * width * bpp, width);
+    }
   gegl_buffer_set (buffer, rect, 0, format, raw, GEGL_AUTO_ROWSTRIDE);
   g_free (raw);
 }
