@@ -35,51 +35,46 @@ typedef struct
   size_t         margin;         /* least distance of a centre from the border */
 } TsSearch;
 
-/* Sum of squared differences against the exemplar neighbourhood centred
- * at pixel `index` (its window inside the exemplar), abandoned (returning
- * >= bound) as soon as a row pushes it past `bound`. */
+/* Sum of squared differences of the gathered neighbourhood `a` against
+ * the window whose first pixel is `b` in an image `stride` pixels wide,
+ * abandoned (returning >= bound) as soon as a row pushes it past `bound`. */
 TS_CLONE_INLINE float
-ts_search_ssd_bounded (const TsSearch *s, size_t index, float bound)
+ts_window_ssd (const float *a, const float *b, size_t patch, size_t stride, float bound)
 {
-  size_t row_floats = s->patch * TS_CHANNELS, w = s->exemplar->width;
-  const float *a = s->neighbourhood;
-  const float *b = s->exemplar->pixels + (index - s->radius * (w + 1)) * TS_CHANNELS;
   float sum = 0.0f;
 
-  for (size_t row = 0; row < s->patch; row++)
+  for (size_t row = 0; row < patch; row++)
     {
-      sum += ts_pixels_ssd (a, b, s->patch);
+      sum += ts_pixels_ssd (a, b, patch);
       if (sum >= bound)
         return sum;
-      a += row_floats;
-      b += w * TS_CHANNELS;
+      a += patch * TS_CHANNELS;
+      b += stride * TS_CHANNELS;
     }
   return sum;
 }
 
-/* ts_search_ssd_bounded for a window that crosses the exemplar's border,
- * read from the exemplar mirrored beyond it (s->mirrored): a shape the
- * border cuts is matched as continuing, not as ending in a straight
- * edge. */
+/* The distance to the exemplar neighbourhood centred at pixel `index`,
+ * whose window lies inside the exemplar. */
+TS_CLONE_INLINE float
+ts_search_ssd_bounded (const TsSearch *s, size_t index, float bound)
+{
+  size_t w = s->exemplar->width;
+  return ts_window_ssd (s->neighbourhood, s->exemplar->pixels + (index - s->radius * (w + 1)) * TS_CHANNELS,
+                        s->patch, w, bound);
+}
+
+/* The same for a window that crosses the exemplar's border, read from the
+ * exemplar mirrored beyond it (s->mirrored): a shape the border cuts is
+ * matched as continuing, not as ending in a straight edge. */
 TS_VECTOR_CLONES static float
 ts_search_ssd_clipped (const TsSearch *s, size_t index, float bound)
 {
-  size_t w = s->exemplar->width, stride = w + 2 * s->radius, row_floats = s->patch * TS_CHANNELS;
+  size_t w = s->exemplar->width, stride = w + 2 * s->radius;
   /* With a margin of the radius, the window's first pixel in the mirrored
    * image has the centre's exemplar coordinates. */
-  const float *b = s->mirrored + ((index / w) * stride + index % w) * TS_CHANNELS;
-  const float *a = s->neighbourhood;
-  float sum = 0.0f;
-
-  for (size_t row = 0; row < s->patch; row++)
-    {
-      sum += ts_pixels_ssd (a, b, s->patch);
-      if (sum >= bound)
-        return sum;
-      a += row_floats;
-      b += stride * TS_CHANNELS;
-    }
-  return sum;
+  return ts_window_ssd (s->neighbourhood, s->mirrored + ((index / w) * stride + index % w) * TS_CHANNELS,
+                        s->patch, stride, bound);
 }
 
 TS_CLONE_INLINE float

@@ -168,6 +168,22 @@ test_tiny_sizes (void)
       }
 }
 
+/* A hand-made 6x6 level over a 12x12 noise exemplar, a neighbourhood of
+ * radius 1 centred at every pixel. */
+static void
+estep_state (TsImage *ex, TsLevelState *state, int32_t *sources, TsAxisGrid *gx, TsAxisGrid *gy,
+             bool wrap)
+{
+  test_noise_image (ex, 12, 12, 4);
+  memset (state, 0, sizeof *state);
+  state->exemplar = ex;
+  state->width = state->height = 6;
+  state->wrap_x = state->wrap_y = wrap;
+  state->source = sources;
+  CHECK (ts_axis_grid_init (gx, 6, 1, 1, 0, wrap) == TS_OK && gx->centres == 6, "grid x");
+  CHECK (ts_axis_grid_init (gy, 6, 1, 1, 0, wrap) == TS_OK && gy->centres == 6, "grid y");
+}
+
 /* E-step on a hand-made state: coherent matches reproduce the exemplar
  * shifted; a heavier group of matches wins a pixel. */
 static void
@@ -179,14 +195,7 @@ test_estep (void)
   TsMatch matches[36];
   int32_t sources[36];
 
-  test_noise_image (&ex, 12, 12, 4);
-  memset (&state, 0, sizeof state);
-  state.exemplar = &ex;
-  state.width = state.height = 6;
-  state.wrap_x = state.wrap_y = true;
-  state.source = sources;
-  CHECK (ts_axis_grid_init (&gx, 6, 1, 1, 0, true) == TS_OK && gx.centres == 6, "grid x");
-  CHECK (ts_axis_grid_init (&gy, 6, 1, 1, 0, true) == TS_OK && gy.centres == 6, "grid y");
+  estep_state (&ex, &state, sources, &gx, &gy, true);
   for (size_t y = 0; y < 6; y++)
     for (size_t x = 0; x < 6; x++)
       {
@@ -230,13 +239,7 @@ test_estep_clipped (void)
   TsMatch matches[36];
   int32_t sources[36];
 
-  test_noise_image (&ex, 12, 12, 4);
-  memset (&state, 0, sizeof state);
-  state.exemplar = &ex;
-  state.width = state.height = 6;
-  state.source = sources;
-  CHECK (ts_axis_grid_init (&gx, 6, 1, 1, 0, false) == TS_OK, "grid x");
-  CHECK (ts_axis_grid_init (&gy, 6, 1, 1, 0, false) == TS_OK, "grid y");
+  estep_state (&ex, &state, sources, &gx, &gy, false);
   for (size_t i = 0; i < 36; i++)
     {
       matches[i] = (TsMatch) { -1, 0.0f, false };
