@@ -20,15 +20,17 @@ import tsops
 from tsops import check, note
 
 # Medians over the exemplars of the plain results (see texsynth-measure
-# --help for the definitions): (measure, "max" or "min", bound). Each
-# bound sits between the medians over seeds (seed 1, the test's, as in
-# docs/benchmarks.md: coherence 1.06, completeness 0.63, copy 0.29,
-# sharpness 0.96; seed 2: 1.27, 0.65, 0.29, 0.96) and a clearly worse
-# engine's (one iteration per level, --set iterations=1: 2.20, 1.18,
-# 0.14, 0.86; copy rises to about 0.40 with the coarse neighbourhoods of
-# tileable results, 11 and 7, for plain ones too: docs/design.md).
+# --help for the definitions): (measure, "max" or "min", bound).
+# Coherence separates a sound engine from a clearly worse one (one
+# iteration per level, --set iterations=1): seeds 1 / 2 / 3 give 1.18 /
+# 1.19 / 1.16, the worse engine 1.60 / 1.66 at seeds 1 / 2 (docs/
+# benchmarks.md). Completeness (seeds 0.55 / 0.65 / 0.79, worse engine
+# 0.79 / 0.79) and sharpness (0.97 / 0.98 / 0.98, worse 0.96 / 0.97) do
+# not separate them; their bounds catch a result that leaves much of the
+# exemplar out or blurs it. Copy stays below a third of the exemplar
+# (0.24 / 0.24 / 0.24), where pasting it whole would reach 1.
 PLAIN_LIMITS = [
-    ("coherence", "max", 1.6),
+    ("coherence", "max", 1.4),
     ("completeness", "max", 0.9),
     ("copy", "max", 0.35),
     ("sharpness", "min", 0.9),
