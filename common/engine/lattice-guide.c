@@ -86,8 +86,14 @@ ts_lattice_guide_build (const TsLatticeEstimate *lattice, const TsPyramid *pyram
   guides->lattice = true;
   guides->channels = 2 * lattice->vectors;
   /* A pixel half a period off costs what two unrelated texture pixels
-   * do: a shifted lattice is as wrong as a foreign texture. */
-  guides->weight = 1.0;
+   * do: a shifted lattice is as wrong as a foreign texture. Where the
+   * phases pin each window's place in its cell exactly (two periods, not
+   * bent to fit a tile), twice that pull keeps the courses that the
+   * texture term lets slip by a cell; one period pins only a stripe,
+   * and a bent lattice's phases are off by up to a phase cell: a stronger
+   * pull cost texture there and kept no more of the lattice
+   * (docs/benchmarks.md, "Lattice guide weight"). */
+  guides->weight = lattice->vectors == 2 && !wrap_x && !wrap_y ? 2.0 : 1.0;
   /* The finest level is left free: its neighbourhoods start from the
    * coarser level's coordinates, which already hold the lattice, and it
    * is three quarters of the work and of the guide's memory. */
