@@ -66,8 +66,8 @@ typedef struct
   int32_t       *x, *y;
   int32_t       *lists;   /* k entries per exemplar pixel, -1 after the last */
   size_t         k;
-  size_t         margin;  /* least distance of a proposed centre from the border */
-  uint8_t       *clipped; /* per pixel: 1 if its window crosses the border */
+  uint8_t       *clipped; /* per pixel: 1 if its window crosses the border;
+                             NULL when every centre keeps its window inside */
 } Proposals;
 
 static void
@@ -86,12 +86,11 @@ proposals_init (Proposals *p, const TsImage *ex, const TsCandidateSet *cands, si
   size_t w = ex->width, h = ex->height, n = w * h;
 
   p->k = k_use < cands->k ? k_use : cands->k;
-  p->margin = margin;
   p->x = malloc (n * sizeof (int32_t));
   p->y = malloc (n * sizeof (int32_t));
   p->lists = malloc ((n * p->k > 0 ? n * p->k : 1) * sizeof (int32_t));
-  p->clipped = malloc (n);
-  if (!p->x || !p->y || !p->lists || !p->clipped)
+  p->clipped = margin < radius ? malloc (n) : NULL;
+  if (!p->x || !p->y || !p->lists || (margin < radius && !p->clipped))
     {
       proposals_free (p);
       return TS_ERROR_OUT_OF_MEMORY;
@@ -106,7 +105,8 @@ proposals_init (Proposals *p, const TsImage *ex, const TsCandidateSet *cands, si
       size_t x = (size_t) i % w, y = (size_t) i / w;
       p->x[i] = (int32_t) x;
       p->y[i] = (int32_t) y;
-      p->clipped[i] = x < radius || y < radius || x + radius >= w || y + radius >= h;
+      if (p->clipped)
+        p->clipped[i] = x < radius || y < radius || x + radius >= w || y + radius >= h;
       for (; j < p->k && list[j] >= 0; j++)
         {
           size_t qx = ts_clamp_centre ((ptrdiff_t) ((size_t) list[j] % w), w, margin);
@@ -152,8 +152,8 @@ propose (TsSearch *s, const Proposals *p, int32_t source, ptrdiff_t dx, ptrdiff_
   size_t ly = cy < 0 ? 0 : (cy >= (ptrdiff_t) h ? h - 1 : (size_t) cy);
   const int32_t *list = p->lists + (ly * w + lx) * p->k;
 
-  ts_search_consider_centre (s, ts_clamp_centre (cy, h, p->margin) * w
-                                + ts_clamp_centre (cx, w, p->margin));
+  ts_search_consider_centre (s, ts_clamp_centre (cy, h, s->margin) * w
+                                + ts_clamp_centre (cx, w, s->margin));
   for (size_t i = 0; i < p->k && list[i] >= 0; i++)
     ts_search_consider_centre (s, (size_t) list[i]);
 }
@@ -269,7 +269,7 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
   {
     TsSearch s = { .exemplar = ex, .patch = pass->patch, .radius = radius,
                    .penalty = state->penalty, .best_centre = -1,
-                   .clipped = mirrored ? proposals.clipped : NULL, .mirrored = mirrored,
+                   .clipped = proposals.clipped, .mirrored = mirrored,
                    .margin = margin };
     float *neighbourhood = malloc (pass->patch * pass->patch * TS_CHANNELS * sizeof (float));
     s.stamp = calloc (ex_pixels, sizeof (uint32_t));

@@ -172,6 +172,9 @@ estimate_bytes (const TsParams *params, const TsImage *exemplar, int threads)
   bytes += pyramid_bytes (ex, 16.0);                   /* working exemplar pyramid */
   bytes += 2.0 * ex * (k * 4.0 + 16.0);                /* two candidate levels + MRPM features */
   bytes += (double) threads * ex * 4.0;                /* dedup stamps */
+  bytes += ex * (16.0 + 1.0);                          /* an M-step's mirrored exemplar and
+                                                          clipped-window flags (its margin of
+                                                          a few pixels is in the fixed overhead) */
   /* Per output pixel, measured ~21 B at 4096x4096 (docs/benchmarks.md): the caller's result (16), sources (4), the coarser level's
    * sources (1) and sparse matches (2), and the host's converted copy of
    * the result (16, the ops' GEGL buffer). */
