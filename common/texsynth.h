@@ -102,7 +102,16 @@ typedef struct
   TsGuideCompare compare;
   double         weight;         /* 0 .. TS_MAX_GUIDE_WEIGHT: at 1 a guide
                                     pixel that disagrees costs as much as
-                                    two unrelated texture pixels          */
+                                    two unrelated texture pixels; 0
+                                    ignores the guides                    */
+  /* Labels only. false (the default): each label's region is a plain
+   * synthesis of that label's texture alone, cut at the target's label
+   * edges, so regions of any width keep their texture (the weight only
+   * says whether the guides count). true: one guided optimization over
+   * the whole output, whose textures blend across label edges as they do
+   * in the exemplar, but regions narrower than about 30 px come out less
+   * coherent than their texture alone. */
+  bool           blend_edges;
 } TsGuides;
 
 /* Defaults: one channel, AUTO, weight TS_DEFAULT_GUIDE_WEIGHT, no data. */

@@ -28,7 +28,8 @@ enum_end (TexsynthGuideCompare)
 property_double (guide_weight, _("Guide weight"), TS_DEFAULT_GUIDE_WEIGHT)
   description (_("How much following the guides counts against a coherent "
                  "texture: at 1 a pixel whose guide disagrees costs as much "
-                 "as two unrelated pixels of the texture"))
+                 "as two unrelated pixels of the texture. Labels without "
+                 "blended edges are followed exactly at any weight above 0"))
   value_range (0.0, TS_MAX_GUIDE_WEIGHT)
   ui_range    (0.0, 10.0)
 
@@ -39,6 +40,14 @@ property_enum (compare, _("Compare guides as"), TexsynthGuideCompare, texsynth_g
                  "(heights, sketches). Automatic takes labels when the "
                  "exemplar's guide has few colours and most of the input "
                  "uses them"))
+
+property_boolean (blend_edges, _("Blend label edges"), FALSE)
+  description (_("Labels only. Off: each label's area is grown from its own "
+                 "texture alone and cut at the label's edges, so areas of "
+                 "any width keep their texture. On: one synthesis over the "
+                 "whole image, whose textures blend across label edges as "
+                 "they do in the exemplar, but areas narrower than about 30 "
+                 "pixels lose some of their texture"))
 
 property_boolean (tileable, _("Tileable"), FALSE)
   description (_("Make the result tile seamlessly: its left edge continues "
@@ -257,6 +266,7 @@ process (GeglOperation       *operation,
   memset (&in, 0, sizeof in);
   ts_guides_init (&in.guides);
   in.guides.weight = o->guide_weight;
+  in.guides.blend_edges = o->blend_edges;
   in.guides.compare = o->compare == TEXSYNTH_GUIDE_COMPARE_LABELS ? TS_GUIDE_LABELS
                       : o->compare == TEXSYNTH_GUIDE_COMPARE_VALUES ? TS_GUIDE_VALUES
                                                                     : TS_GUIDE_AUTO;

@@ -100,6 +100,13 @@ ts_guides_use_labels (const TsParams *params, const TsImage *exemplar)
   return (double) matching >= TS_GUIDE_LABEL_SHARE * (double) n;
 }
 
+bool
+ts_guide_layers_apply (const TsParams *params, const TsImage *exemplar)
+{
+  return params->guides && !params->guides->blend_edges && params->guides->weight > 0.0 &&
+         ts_guides_use_labels (params, exemplar);
+}
+
 static bool
 all_finite (const float *values, size_t count)
 {
@@ -167,11 +174,18 @@ ts_guides_estimate_bytes (const TsParams *params, const TsImage *exemplar)
 
   if (!params->guides && params->initial_source)
     return 0.0;
+  /* A lattice guide, if the exemplar has one (lattice.h): value planes
+   * of every level but the finest, the exemplar grouped by phase, and
+   * the estimate's FFT of at most 1024x1024 complex doubles. */
+  double lattice = (ex + out) * 16.0 / 3.0 + ex * 4.0 + fmin (4.0 * ex, 1024.0 * 1024.0) * 16.0;
+  if (ts_guide_layers_apply (params, exemplar))
+    /* Layers: their sources, both label maps, one layer's result and
+     * sources, one layer's exemplar, and the lattice guide a layer's
+     * plain synthesis may build; that synthesis needs no more than a
+     * plain one of the output's size. */
+    return out * 8.0 + (out + ex) + out * (16.0 + 8.0) + ex * 16.0 + lattice;
   if (!params->guides)
-    /* A lattice guide, if the exemplar has one (lattice.h): value planes
-     * of every level but the finest, the exemplar grouped by phase, and
-     * the estimate's FFT of at most 1024x1024 complex doubles. */
-    return (ex + out) * 16.0 / 3.0 + ex * 4.0 + fmin (4.0 * ex, 1024.0 * 1024.0) * 16.0;
+    return lattice;
   /* Value pyramids of both guides (labels take less), the exemplar's
    * pixels grouped by bin, and a level's builder copy. */
   return (ex + out) * 16.0 * 4.0 / 3.0 + ex * 4.0 + (ex + out) * 16.0;

@@ -8,6 +8,10 @@
 /* Bytes of the guides of a synthesis: the caller's, or the lattice guide
  * a plain synthesis may build. */
 double   ts_guides_estimate_bytes (const TsParams *params, const TsImage *exemplar);
+/* Whether ts_synthesize grows the output in layers (guide-layers.c):
+ * guides that count (weight above 0), compared as labels, edges not
+ * blended. */
+bool     ts_guide_layers_apply (const TsParams *params, const TsImage *exemplar);
 /* Checks params->guides, if any, against the output and the exemplar. */
 TsStatus ts_guides_validate (const TsParams *params, const TsImage *exemplar, TsError *error);
 /* Distinct guide values of `n` pixels into `table` (max entries of

@@ -1,6 +1,7 @@
 /* Coarse-to-fine texture optimization driver (Kwatra et al. 2005 with
  * k-coherence search over MRPM candidate sets).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "synthesize.h"
 #include "lattice.h"
 #include "level.h"
 #include "occurrence.h"
@@ -537,8 +538,8 @@ write_result (const TsParams *params, const Work *w, TsImage *output)
 }
 
 TsStatus
-ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
-               TsProgressFunc progress, void *user_data, TsError *error)
+ts_synthesize_optimized (const TsParams *params, const TsImage *exemplar, TsImage *output,
+                         TsProgressFunc progress, void *user_data, TsError *error)
 {
   Run run = { .params = params, .progress = { .func = progress, .user_data = user_data },
              .stage = "matching exemplar" };
@@ -546,15 +547,6 @@ ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
   TsStatus status;
 
   ts_cancel_init (&run.cancel, progress ? report_midway : NULL, &run);
-
-  status = ts_params_validate (params, exemplar, error);
-  if (status != TS_OK)
-    return status;
-  if (!output || !output->pixels || output->width != params->output_width ||
-      output->height != params->output_height)
-    return ts_fail (error, TS_ERROR_INVALID_ARGUMENT,
-                    "the output image must be allocated with %zux%zu pixels",
-                    params->output_width, params->output_height);
 
   memset (&w, 0, sizeof w);
   status = ts_image_to_working (exemplar, &w.working);

@@ -81,15 +81,17 @@ near_edge (const float *map, size_t w, size_t h, size_t x, size_t y, size_t marg
 
 /* Share of output pixels away from the target's label edges whose source
  * lies in the exemplar region of the label asked for. */
+/* Share of the pixels whose source has the target's label: those at
+ * least `margin` from a target edge (none with margin 0). */
 static double
-label_fidelity (const float *target, const float *ex_labels, const int32_t *sources)
+label_fidelity (const float *target, const float *ex_labels, const int32_t *sources, size_t margin)
 {
   size_t judged = 0, right = 0;
   for (size_t y = 0; y < OUT; y++)
     for (size_t x = 0; x < OUT; x++)
       {
         size_t p = y * OUT + x;
-        if (near_edge (target, OUT, OUT, x, y, EDGE_MARGIN))
+        if (margin && near_edge (target, OUT, OUT, x, y, margin))
           continue;
         judged++;
         right += ex_labels[sources[2 * p + 1] * EX_W + sources[2 * p]] == target[p];
@@ -147,28 +149,39 @@ test_texture_by_numbers (void)
   ts_guides_init (&guides);
   guides.exemplar_guide = ex_labels;
   guides.target_guide = target;
-  for (Layout layout = DISCS; layout <= LINES; layout++)
-    {
-      TsParams p;
-      for (size_t y = 0; y < OUT; y++)
-        for (size_t x = 0; x < OUT; x++)
-          target[y * OUT + x] = target_label (layout, x, y);
-      ts_params_init (&p);
-      p.output_width = p.output_height = OUT;
-      p.guides = &guides;
-      CHECK (ts_guides_use_labels (&p, &ex), "%s: a two-value map compares as labels",
-             names[layout]);
-      if (run_guided (&ex, &guides, 3, &out, sources, layout == STRIPES) != TS_OK)
-        {
-          CHECK (false, "%s: guided synthesis ran", names[layout]);
-          continue;
-        }
-      double fidelity = label_fidelity (target, ex_labels, sources);
-      printf ("%-8s label fidelity %.3f\n", names[layout], fidelity);
-      if (!test_small ())
-        CHECK (fidelity >= 0.95, "%s: label fidelity %.3f >= 0.95", names[layout], fidelity);
-      dump (names[layout], &out);
-    }
+  for (int blend = 0; blend <= 1; blend++)
+    for (Layout layout = DISCS; layout <= LINES; layout++)
+      {
+        TsParams p;
+        const char *how = blend ? "blended edges" : "layers";
+        for (size_t y = 0; y < OUT; y++)
+          for (size_t x = 0; x < OUT; x++)
+            target[y * OUT + x] = target_label (layout, x, y);
+        guides.blend_edges = blend;
+        ts_params_init (&p);
+        p.output_width = p.output_height = OUT;
+        p.guides = &guides;
+        CHECK (ts_guides_use_labels (&p, &ex), "%s: a two-value map compares as labels",
+               names[layout]);
+        if (run_guided (&ex, &guides, 3, &out, sources, layout == STRIPES) != TS_OK)
+          {
+            CHECK (false, "%s, %s: guided synthesis ran", names[layout], how);
+            continue;
+          }
+        double fidelity = label_fidelity (target, ex_labels, sources, EDGE_MARGIN);
+        double everywhere = label_fidelity (target, ex_labels, sources, 0);
+        printf ("%-8s %-13s label fidelity %.3f, at every pixel %.3f\n", names[layout], how,
+                fidelity, everywhere);
+        if (!test_small ())
+          CHECK (fidelity >= 0.95, "%s, %s: label fidelity %.3f >= 0.95", names[layout], how,
+                 fidelity);
+        /* In layers every pixel, edges included, takes its label's texture. */
+        if (!blend)
+          CHECK (everywhere == 1.0, "%s, layers: every pixel's source has its label (%.4f)",
+                 names[layout], everywhere);
+        if (!blend)
+          dump (names[layout], &out);
+      }
   free (ex.pixels);
   free (out.pixels);
   free (ex_labels);
@@ -313,6 +326,18 @@ test_threads (void)
   omp_set_num_threads (threads);
   CHECK (memcmp (a, b, OUT * OUT * 2 * sizeof (int32_t)) == 0,
          "guided sources on one thread equal those on two");
+  /* Labels, grown in layers. */
+  for (size_t y = 0; y < OUT; y++)
+    for (size_t x = 0; x < OUT; x++)
+      target[y * OUT + x] = target_label (LINES, x, y);
+  guides.compare = TS_GUIDE_LABELS;
+  omp_set_num_threads (1);
+  CHECK (run_guided (&ex, &guides, 9, &out, a, true) == TS_OK, "layers on one thread ran");
+  omp_set_num_threads (threads > 1 ? threads : 2);
+  CHECK (run_guided (&ex, &guides, 9, &out, b, true) == TS_OK, "layers on two threads ran");
+  omp_set_num_threads (threads);
+  CHECK (memcmp (a, b, OUT * OUT * 2 * sizeof (int32_t)) == 0,
+         "layers' sources on one thread equal those on two");
   free (ex.pixels);
   free (out.pixels);
   free (ex_labels);

@@ -2,8 +2,9 @@
 # plug-in-texsynth-texture-by-numbers paints a two-texture exemplar (brick
 # on the left, 3dweave on the right, its guide black and white) along a
 # target guide of a white disc on black, as a new layer above the target;
-# away from the disc's edge, the blocks inside it must take the weave's
-# colours and those outside the brick's. plug-in-texsynth-style-transfer
+# away from the disc's edge, the blocks inside it must look like the
+# weave (their nearest window of the two textures is the weave's) and
+# those outside like the brick. plug-in-texsynth-style-transfer
 # repaints a dark-to-light gradient with brick's texture in place: its
 # blurred lightness must follow the gradient's. Bad input: an exemplar's
 # guide of another size is a calling error that adds no layer.
@@ -144,29 +145,45 @@ def block_means(path):
     return means
 
 
-def mean_colour(pixel):
-    total = [0.0, 0.0, 0.0]
-    for y in range(HALF):
-        for x in range(HALF):
-            for c, v in enumerate(pixel(x, y)):
-                total[c] += v
-    return tuple(t / HALF ** 2 for t in total)
+def window_features(pixel, x0, y0):
+    """Mean and spread of each channel over the BLOCK x BLOCK window at (x0, y0)."""
+    values = [pixel(x, y) for y in range(y0, y0 + BLOCK) for x in range(x0, x0 + BLOCK)]
+    means = [sum(v[c] for v in values) / len(values) for c in range(3)]
+    spreads = [math.sqrt(sum((v[c] - means[c]) ** 2 for v in values) / len(values))
+               for c in range(3)]
+    return tuple(means + spreads)
+
+
+def texture_windows(pixel):
+    """Features of the texture's windows, every other pixel: a texture is
+    told by its nearest window, since one colour does not stand for a
+    texture with parts of several (the weave's brown strands)."""
+    return [window_features(pixel, x, y)
+            for y in range(0, HALF - BLOCK + 1, 2) for x in range(0, HALF - BLOCK + 1, 2)]
+
+
+def nearest(features, windows):
+    return min(math.dist(features, w) for w in windows)
 
 
 r = fields("bynumbers")
 if tsops.check(r is not None, "texture by numbers returns a new layer"):
     tsops.check(r == [1, TARGET_W, TARGET_H], "one new layer of the target's size %dx%d (got %s)"
                 % (TARGET_W, TARGET_H, r))
-    brick_mean, weave_mean = mean_colour(brick), mean_colour(weave)
+    brick_windows, weave_windows = texture_windows(brick), texture_windows(weave)
+    w, _, px = tsops.load(by_numbers_out)
+    result = lambda x, y: px[(y * w + x) * 4:(y * w + x) * 4 + 3]  # noqa: E731
     right = judged = 0
-    for (bx, by), colour in block_means(by_numbers_out).items():
-        cx, cy = (bx + 0.5) * BLOCK, (by + 0.5) * BLOCK
-        distance = math.hypot(cx - CENTRE[0], cy - CENTRE[1]) - RADIUS
-        if abs(distance) < EDGE + BLOCK / 2:
-            continue
-        nearer_weave = math.dist(colour, weave_mean) < math.dist(colour, brick_mean)
-        judged += 1
-        right += nearer_weave == (distance < 0)
+    for by in range(TARGET_H // BLOCK):
+        for bx in range(TARGET_W // BLOCK):
+            cx, cy = (bx + 0.5) * BLOCK, (by + 0.5) * BLOCK
+            distance = math.hypot(cx - CENTRE[0], cy - CENTRE[1]) - RADIUS
+            if abs(distance) < EDGE + BLOCK / 2:
+                continue
+            features = window_features(result, bx * BLOCK, by * BLOCK)
+            nearer_weave = nearest(features, weave_windows) < nearest(features, brick_windows)
+            judged += 1
+            right += nearer_weave == (distance < 0)
     share = right / judged if judged else 0.0
     tsops.check(share >= 0.95, "texture by numbers: %.3f of %d blocks away from the disc's edge "
                 "take the texture their label asks for (>= 0.95)" % (share, judged))

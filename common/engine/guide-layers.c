@@ -1,0 +1,284 @@
+/* Texture by numbers in layers. A label's region of the target may be
+ * thinner than the coarse levels' neighbourhoods: there one guided
+ * optimization sees too little of it to lay out its texture, and the
+ * region comes out less coherent than that texture synthesised alone.
+ * So each label's region is cut from a plain synthesis of its own
+ * texture (the exemplar's pixels of that label, the rest transparent)
+ * as large as the region's bounding box, and the label edges are the
+ * target's. Synthesising a band along the edges again under the guide,
+ * from this map, made the thin regions less coherent again, even a band
+ * of one pixel (docs/guided.md).
+ * SPDX-License-Identifier: LGPL-3.0-or-later */
+#include "guide-layers.h"
+#include "guide-params.h"
+#include "image.h"
+#include "synthesize.h"
+#include "error.h"
+#include "rng.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Random stream of the layers' seeds (rng.h). */
+#define TS_LAYER_SEED_STREAM 11
+
+typedef struct
+{
+  size_t x0, y0, x1, y1; /* x1, y1 exclusive */
+} Box;
+
+typedef struct
+{
+  TsProgressFunc func;
+  void          *user_data;
+  double         start, span;
+} Part;
+
+static bool
+part_report (double fraction, const char *stage, void *data)
+{
+  const Part *part = data;
+  return part->func (part->start + part->span * fraction, stage, part->user_data);
+}
+
+/* Each pixel's label: the exemplar guide's distinct values, and the
+ * nearest of them for each target pixel. */
+static TsStatus
+label_maps (const TsParams *params, const TsImage *exemplar, uint8_t **ex_label,
+            uint8_t **target_label, size_t *count)
+{
+  const TsGuides *g = params->guides;
+  float table[TS_MAX_GUIDE_LABELS * TS_MAX_GUIDE_CHANNELS];
+  size_t ex_n = exemplar->width * exemplar->height;
+  size_t out_n = params->output_width * params->output_height;
+
+  if (!ts_guide_find_labels (g->exemplar_guide, ex_n, g->channels, table, TS_MAX_GUIDE_LABELS,
+                             count))
+    return TS_ERROR_BAD_PARAMETER;
+  *ex_label = malloc (ex_n);
+  *target_label = malloc (out_n);
+  if (!*ex_label || !*target_label)
+    return TS_ERROR_OUT_OF_MEMORY;
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t i = 0; i < (ptrdiff_t) ex_n; i++)
+    (*ex_label)[i] = ts_guide_nearest_label (table, *count, g->channels,
+                                             g->exemplar_guide + (size_t) i * g->channels);
+#pragma omp parallel for schedule(static)
+  for (ptrdiff_t i = 0; i < (ptrdiff_t) out_n; i++)
+    (*target_label)[i] = ts_guide_nearest_label (table, *count, g->channels,
+                                                 g->target_guide + (size_t) i * g->channels);
+  return TS_OK;
+}
+
+/* Bounding box of `label` in a w x h map; false if it has no pixel. */
+static bool
+bounding_box (const uint8_t *map, size_t w, size_t h, uint8_t label, Box *box)
+{
+  *box = (Box) { w, h, 0, 0 };
+  for (size_t y = 0; y < h; y++)
+    for (size_t x = 0; x < w; x++)
+      if (map[y * w + x] == label)
+        {
+          box->x0 = x < box->x0 ? x : box->x0;
+          box->x1 = x + 1 > box->x1 ? x + 1 : box->x1;
+          box->y0 = y < box->y0 ? y : box->y0;
+          box->y1 = y + 1 > box->y1 ? y + 1 : box->y1;
+        }
+  return box->x1 > box->x0;
+}
+
+static size_t
+box_area (const Box *b)
+{
+  return (b->x1 - b->x0) * (b->y1 - b->y0);
+}
+
+/* The exemplar's pixels of `label` inside their bounding box `eb`, the
+ * others made transparent, so a synthesis from it uses that texture
+ * alone. */
+static TsStatus
+layer_exemplar (const TsImage *exemplar, const uint8_t *ex_label, uint8_t label, const Box *eb,
+                TsImage *layer)
+{
+  layer->width = eb->x1 - eb->x0;
+  layer->height = eb->y1 - eb->y0;
+  layer->pixels = malloc (layer->width * layer->height * TS_CHANNELS * sizeof (float));
+  if (!layer->pixels)
+    return TS_ERROR_OUT_OF_MEMORY;
+  for (size_t y = 0; y < layer->height; y++)
+    for (size_t x = 0; x < layer->width; x++)
+      {
+        size_t s = (eb->y0 + y) * exemplar->width + eb->x0 + x;
+        float *d = layer->pixels + (y * layer->width + x) * TS_CHANNELS;
+        memcpy (d, exemplar->pixels + s * TS_CHANNELS, TS_CHANNELS * sizeof (float));
+        if (ex_label[s] != label)
+          d[3] = 0.0f;
+      }
+  return TS_OK;
+}
+
+/* Sources of `label`'s pixels that a layer took from the exemplar's
+ * transparent part (another label's pixels) continue a neighbour's copy
+ * instead: the neighbour's source moved by the step between them, if
+ * that pixel has the label. Passes sweep down and up until none is left
+ * or a pass mends nothing; the rest take the label's first pixel. */
+static void
+mend_sources (const TsParams *params, const TsImage *exemplar, const uint8_t *ex_label,
+              const uint8_t *target_label, uint8_t label, const Box *ob, int32_t *start)
+{
+  size_t out_w = params->output_width, ew = exemplar->width, eh = exemplar->height;
+  static const int step[4][2] = { { -1, 0 }, { 0, -1 }, { 1, 0 }, { 0, 1 } };
+  bool left = true;
+
+  for (size_t pass = 0; left; pass++)
+    {
+      size_t mended = 0;
+      left = false;
+      for (size_t i = 0; i < box_area (ob); i++)
+        {
+          size_t k = pass % 2 ? box_area (ob) - 1 - i : i;
+          size_t x = ob->x0 + k % (ob->x1 - ob->x0), y = ob->y0 + k / (ob->x1 - ob->x0);
+          int32_t *s = start + 2 * (y * out_w + x);
+          if (target_label[y * out_w + x] != label || ex_label[(size_t) s[1] * ew + (size_t) s[0]] == label)
+            continue;
+          for (size_t d = 0; d < 4; d++)
+            {
+              ptrdiff_t nx = (ptrdiff_t) x + step[d][0], ny = (ptrdiff_t) y + step[d][1];
+              if (nx < (ptrdiff_t) ob->x0 || ny < (ptrdiff_t) ob->y0 || nx >= (ptrdiff_t) ob->x1 ||
+                  ny >= (ptrdiff_t) ob->y1 || target_label[(size_t) ny * out_w + (size_t) nx] != label)
+                continue;
+              const int32_t *n = start + 2 * ((size_t) ny * out_w + (size_t) nx);
+              ptrdiff_t sx = n[0] - step[d][0], sy = n[1] - step[d][1];
+              if (ex_label[(size_t) n[1] * ew + (size_t) n[0]] == label && sx >= 0 && sy >= 0 &&
+                  sx < (ptrdiff_t) ew && sy < (ptrdiff_t) eh &&
+                  ex_label[(size_t) sy * ew + (size_t) sx] == label)
+                {
+                  s[0] = (int32_t) sx;
+                  s[1] = (int32_t) sy;
+                  mended++;
+                  break;
+                }
+            }
+          left = left || ex_label[(size_t) s[1] * ew + (size_t) s[0]] != label;
+        }
+      if (left && mended == 0)
+        break;
+    }
+  if (!left)
+    return;
+  size_t first = 0;
+  while (ex_label[first] != label)
+    first++;
+  for (size_t y = ob->y0; y < ob->y1; y++)
+    for (size_t x = ob->x0; x < ob->x1; x++)
+      {
+        int32_t *s = start + 2 * (y * out_w + x);
+        if (target_label[y * out_w + x] == label && ex_label[(size_t) s[1] * ew + (size_t) s[0]] != label)
+          {
+            s[0] = (int32_t) (first % ew);
+            s[1] = (int32_t) (first / ew);
+          }
+      }
+}
+
+/* A plain synthesis of `label`'s texture over the box `ob` of the
+ * output; its sources go to start[] at the pixels the target gives that
+ * label, in the whole exemplar's coordinates. */
+static TsStatus
+synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t *ex_label,
+                  const uint8_t *target_label, uint8_t label, const Box *ob, int32_t *start,
+                  Part *part, TsError *error)
+{
+  size_t out_w = params->output_width;
+  Box eb;
+  TsImage layer = { 0 }, result = { ob->x1 - ob->x0, ob->y1 - ob->y0, NULL };
+  int32_t *sources = NULL;
+  TsParams p = *params;
+  TsStatus status;
+
+  bounding_box (ex_label, exemplar->width, exemplar->height, label, &eb);
+  status = layer_exemplar (exemplar, ex_label, label, &eb, &layer);
+  result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
+  sources = malloc (result.width * result.height * 2 * sizeof (int32_t));
+  if (status == TS_OK && (!result.pixels || !sources))
+    status = TS_ERROR_OUT_OF_MEMORY;
+  if (status == TS_OK)
+    {
+      p.output_width = result.width;
+      p.output_height = result.height;
+      p.wrap_x = params->wrap_x && result.width == params->output_width;
+      p.wrap_y = params->wrap_y && result.height == params->output_height;
+      p.seed = (uint32_t) ts_random (params->seed, 0, 0, label, TS_LAYER_SEED_STREAM);
+      p.guides = NULL;
+      p.source_map = sources;
+      status = ts_params_validate (&p, &layer, error);
+      if (status == TS_OK)
+        status = ts_synthesize_optimized (&p, &layer, &result, part->func ? part_report : NULL,
+                                          part, error);
+    }
+  if (status == TS_OK)
+    for (size_t y = ob->y0; y < ob->y1; y++)
+      for (size_t x = ob->x0; x < ob->x1; x++)
+        if (target_label[y * out_w + x] == label)
+          {
+            const int32_t *s = sources + 2 * ((y - ob->y0) * result.width + x - ob->x0);
+            start[2 * (y * out_w + x)] = s[0] + (int32_t) eb.x0;
+            start[2 * (y * out_w + x) + 1] = s[1] + (int32_t) eb.y0;
+          }
+  if (status == TS_OK)
+    mend_sources (params, exemplar, ex_label, target_label, label, ob, start);
+  free (layer.pixels);
+  free (result.pixels);
+  free (sources);
+  return status;
+}
+
+/* The result and the caller's source map from the layers' sources. */
+static void
+write_layers (const TsParams *params, const TsImage *exemplar, const int32_t *start,
+              TsImage *output)
+{
+  size_t n = params->output_width * params->output_height;
+
+  ts_copy_by_source_map (exemplar, start, output);
+  if (params->source_map)
+    memcpy (params->source_map, start, n * 2 * sizeof (int32_t));
+}
+
+TsStatus
+ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
+                            TsProgressFunc progress, void *user_data, TsError *error)
+{
+  size_t out_w = params->output_width, out_h = params->output_height, count = 0;
+  uint8_t *ex_label = NULL, *target_label = NULL;
+  int32_t *start = malloc (out_w * out_h * 2 * sizeof (int32_t));
+  Box box[TS_MAX_GUIDE_LABELS];
+  bool present[TS_MAX_GUIDE_LABELS];
+  double total = 0.0, done = 0.0;
+  Part part = { progress, user_data, 0.0, 0.0 };
+  TsStatus status = start ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+
+  if (status == TS_OK)
+    status = label_maps (params, exemplar, &ex_label, &target_label, &count);
+  if (status != TS_OK)
+    ts_fail (error, status, "%s", ts_status_string (status));
+  /* Progress: each layer by its area. */
+  for (size_t l = 0; status == TS_OK && l < count; l++)
+    if ((present[l] = bounding_box (target_label, out_w, out_h, (uint8_t) l, &box[l])))
+      total += (double) box_area (&box[l]);
+  for (size_t l = 0; status == TS_OK && l < count; l++)
+    if (present[l])
+      {
+        part.start = done / total;
+        part.span = (double) box_area (&box[l]) / total;
+        status = synthesize_layer (params, exemplar, ex_label, target_label, (uint8_t) l, &box[l],
+                                   start, &part, error);
+        done += (double) box_area (&box[l]);
+      }
+  if (status == TS_OK)
+    write_layers (params, exemplar, start, output);
+  free (ex_label);
+  free (target_label);
+  free (start);
+  return status;
+}
