@@ -70,21 +70,22 @@ label_maps (const TsParams *params, const TsImage *exemplar, uint8_t **ex_label,
   return TS_OK;
 }
 
-/* Bounding box of `label` in a w x h map; false if it has no pixel. */
-static bool
-bounding_box (const uint8_t *map, size_t w, size_t h, uint8_t label, Box *box)
+/* Bounding boxes of labels 0 .. count-1 in a w x h map, in one pass; a
+ * label without pixels gets an empty box (x1 <= x0). */
+static void
+bounding_boxes (const uint8_t *map, size_t w, size_t h, size_t count, Box *box)
 {
-  *box = (Box) { w, h, 0, 0 };
+  for (size_t l = 0; l < count; l++)
+    box[l] = (Box) { w, h, 0, 0 };
   for (size_t y = 0; y < h; y++)
     for (size_t x = 0; x < w; x++)
-      if (map[y * w + x] == label)
-        {
-          box->x0 = x < box->x0 ? x : box->x0;
-          box->x1 = x + 1 > box->x1 ? x + 1 : box->x1;
-          box->y0 = y < box->y0 ? y : box->y0;
-          box->y1 = y + 1 > box->y1 ? y + 1 : box->y1;
-        }
-  return box->x1 > box->x0;
+      {
+        Box *b = &box[map[y * w + x]];
+        b->x0 = x < b->x0 ? x : b->x0;
+        b->x1 = x + 1 > b->x1 ? x + 1 : b->x1;
+        b->y0 = y < b->y0 ? y : b->y0;
+        b->y1 = y + 1 > b->y1 ? y + 1 : b->y1;
+      }
 }
 
 static size_t
@@ -190,13 +191,14 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
                   Part *part, TsError *error)
 {
   size_t out_w = params->output_width;
-  Box eb;
+  Box eb, ex_box[TS_MAX_GUIDE_LABELS];
   TsImage layer = { 0 }, result = { ob->x1 - ob->x0, ob->y1 - ob->y0, NULL };
   int32_t *sources = NULL;
   TsParams p = *params;
   TsStatus status;
 
-  bounding_box (ex_label, exemplar->width, exemplar->height, label, &eb);
+  bounding_boxes (ex_label, exemplar->width, exemplar->height, (size_t) label + 1, ex_box);
+  eb = ex_box[label];
   status = layer_exemplar (exemplar, ex_label, label, &eb, &layer);
   result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
   sources = malloc (result.width * result.height * 2 * sizeof (int32_t));
@@ -253,7 +255,6 @@ ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsI
   uint8_t *ex_label = NULL, *target_label = NULL;
   int32_t *start = malloc (out_w * out_h * 2 * sizeof (int32_t));
   Box box[TS_MAX_GUIDE_LABELS];
-  bool present[TS_MAX_GUIDE_LABELS];
   double total = 0.0, done = 0.0;
   Part part = { progress, user_data, 0.0, 0.0 };
   TsStatus status = start ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
@@ -263,11 +264,13 @@ ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsI
   if (status != TS_OK)
     ts_fail (error, status, "%s", ts_status_string (status));
   /* Progress: each layer by its area. */
+  if (status == TS_OK)
+    bounding_boxes (target_label, out_w, out_h, count, box);
   for (size_t l = 0; status == TS_OK && l < count; l++)
-    if ((present[l] = bounding_box (target_label, out_w, out_h, (uint8_t) l, &box[l])))
+    if (box[l].x1 > box[l].x0)
       total += (double) box_area (&box[l]);
   for (size_t l = 0; status == TS_OK && l < count; l++)
-    if (present[l])
+    if (box[l].x1 > box[l].x0)
       {
         part.start = done / total;
         part.span = (double) box_area (&box[l]) / total;

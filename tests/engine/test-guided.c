@@ -189,6 +189,39 @@ test_texture_by_numbers (void)
   free (sources);
 }
 
+/* Regions of one pixel and one pixel wide grow in layers too, each
+ * pixel from its own label. */
+static void
+test_tiny_regions (void)
+{
+  float *ex_labels = malloc (EX_W * EX_H * sizeof (float));
+  float *target = calloc (OUT * OUT, sizeof (float));
+  int32_t *sources = malloc (OUT * OUT * 2 * sizeof (int32_t));
+  TsImage ex, out = { OUT, OUT, malloc (OUT * OUT * TS_CHANNELS * sizeof (float)) };
+  TsGuides guides;
+
+  two_texture_exemplar (&ex, ex_labels);
+  target[40 * OUT + 40] = 1.0f;
+  for (size_t y = 0; y < OUT; y++)
+    target[y * OUT + 100] = 1.0f;
+  ts_guides_init (&guides);
+  guides.exemplar_guide = ex_labels;
+  guides.target_guide = target;
+  if (run_guided (&ex, &guides, 5, &out, sources, false) == TS_OK)
+    {
+      double everywhere = label_fidelity (target, ex_labels, sources, 0);
+      CHECK (everywhere == 1.0, "a one-pixel dot and line: every pixel's source has its label "
+             "(%.4f)", everywhere);
+    }
+  else
+    CHECK (false, "a one-pixel dot and line: guided synthesis ran");
+  free (ex.pixels);
+  free (out.pixels);
+  free (ex_labels);
+  free (target);
+  free (sources);
+}
+
 /* A target that is its own lightness (a disc and a gradient, as a
  * photo's layout would be) restyled with bark: the result's blurred L
  * follows the target's. */
@@ -410,6 +443,7 @@ main (void)
   test_bad_guides ();
   test_extreme_style ();
   test_texture_by_numbers ();
+  test_tiny_regions ();
   test_style_transfer ();
   test_threads ();
   return test_finish ("test-guided");
