@@ -20,7 +20,11 @@
 #define TS_CONVERGED_FRACTION 0.002
 /* Occurrence penalty per unit of over-use, in exemplar variances: a
  * tenth, so it decides between matches about equally good but never
- * outweighs a visibly better one. */
+ * outweighs a visibly better one. It spreads the layout over the
+ * exemplar at the coarser levels; the finest level, whose layout is
+ * set, goes without: there it drove the matches off the few pixels that
+ * thin structures (cracks, coastlines) are copied from, onto even parts
+ * (docs/benchmarks.md, "Occurrence penalty at the finest level"). */
 #define TS_OCCURRENCE_STRENGTH 0.1f
 /* Width of the band around a tile edge whose coherence matters: the
  * 7x7 windows that straddle it. */
@@ -216,7 +220,7 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   TsOccurrence occurrence;
   uint32_t *usage;
   TsStatus status;
-  float occ_strength = TS_OCCURRENCE_STRENGTH;
+  float occ_strength = level > 0 ? TS_OCCURRENCE_STRENGTH : 0.0f;
   size_t free_pixels = pixels;
   TsRegionBound region_bound = { 0 };
 
