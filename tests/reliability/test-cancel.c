@@ -337,7 +337,7 @@ main (int argc, char **argv)
   size_t large = argc > 3 ? (size_t) strtoul (argv[3], NULL, 10) : DEFAULT_LARGE_EXEMPLAR;
   double bound = argc > 4 ? strtod (argv[4], NULL) : DEFAULT_BOUND_S;
   size_t large_solid = argc > 5 ? (size_t) strtoul (argv[5], NULL, 10) : DEFAULT_LARGE_SOLID;
-  char name[6][48];
+  char name[7][48];
   TsImage ex, big;
   Job job;
 
@@ -355,6 +355,36 @@ main (int argc, char **argv)
   snprintf (name[0], sizeof name[0], "%zux%zu", side, side);
   job_2d (&job, name[0], &ex, side);
   run_cancels (&job, spread, sizeof spread / sizeof spread[0], bound);
+
+  /* Texture by numbers in layers: the exemplar's halves as two labels, a
+   * disc of one on the other; the cancels fall in either label's
+   * synthesis. */
+  {
+    float *ex_guide = malloc (ex.width * ex.height * sizeof (float));
+    float *target = malloc (side * side * sizeof (float));
+    TsGuides guides;
+    CHECK (ex_guide && target, "guide allocation");
+    if (ex_guide && target)
+      {
+        for (size_t i = 0; i < ex.width * ex.height; i++)
+          ex_guide[i] = i % ex.width < ex.width / 2 ? 0.0f : 1.0f;
+        for (size_t y = 0; y < side; y++)
+          for (size_t x = 0; x < side; x++)
+            {
+              double dx = (double) x - side / 2.0, dy = (double) y - side / 2.0;
+              target[y * side + x] = dx * dx + dy * dy < side * side / 9.0 ? 1.0f : 0.0f;
+            }
+        ts_guides_init (&guides);
+        guides.exemplar_guide = ex_guide;
+        guides.target_guide = target;
+        snprintf (name[6], sizeof name[6], "%zux%zu by numbers", side, side);
+        job_2d (&job, name[6], &ex, side);
+        job.params.guides = &guides;
+        run_cancels (&job, spread, sizeof spread / sizeof spread[0], bound);
+      }
+    free (ex_guide);
+    free (target);
+  }
 
   snprintf (name[1], sizeof name[1], "solid %zu^3", solid);
   job_solid (&job, name[1], &ex, solid);
