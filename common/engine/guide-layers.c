@@ -19,6 +19,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* A layer's exemplar is the bounding box of its label's pixels, grown to
+ * at least this side where the exemplar allows: the finest level's large
+ * neighbourhood (schedule.c), so that a label of a few pixels still
+ * makes an exemplar the synthesis can match windows in. */
+#define TS_LAYER_MIN_SIDE 11
 /* Random stream of the layers' seeds (rng.h). */
 #define TS_LAYER_SEED_STREAM 11
 
@@ -86,6 +91,25 @@ bounding_boxes (const uint8_t *map, size_t w, size_t h, size_t count, Box *box)
         b->y0 = y < b->y0 ? y : b->y0;
         b->y1 = y + 1 > b->y1 ? y + 1 : b->y1;
       }
+}
+
+/* `b` grown on both sides to at least TS_LAYER_MIN_SIDE, within w x h. */
+static void
+grow_box (Box *b, size_t w, size_t h)
+{
+  size_t side_w = w < TS_LAYER_MIN_SIDE ? w : TS_LAYER_MIN_SIDE;
+  size_t side_h = h < TS_LAYER_MIN_SIDE ? h : TS_LAYER_MIN_SIDE;
+
+  while (b->x1 - b->x0 < side_w)
+    {
+      b->x0 -= b->x0 > 0;
+      b->x1 += b->x1 < w && b->x1 - b->x0 < side_w;
+    }
+  while (b->y1 - b->y0 < side_h)
+    {
+      b->y0 -= b->y0 > 0;
+      b->y1 += b->y1 < h && b->y1 - b->y0 < side_h;
+    }
 }
 
 static size_t
@@ -199,6 +223,7 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
 
   bounding_boxes (ex_label, exemplar->width, exemplar->height, (size_t) label + 1, ex_box);
   eb = ex_box[label];
+  grow_box (&eb, exemplar->width, exemplar->height);
   status = layer_exemplar (exemplar, ex_label, label, &eb, &layer);
   result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
   sources = malloc (result.width * result.height * 2 * sizeof (int32_t));

@@ -190,7 +190,7 @@ test_texture_by_numbers (void)
 }
 
 /* Regions of one pixel and one pixel wide grow in layers too, each
- * pixel from its own label. */
+ * pixel from its own label, in the target and in the exemplar. */
 static void
 test_tiny_regions (void)
 {
@@ -215,6 +215,18 @@ test_tiny_regions (void)
     }
   else
     CHECK (false, "a one-pixel dot and line: guided synthesis ran");
+  /* An exemplar whose label 1 is a single pixel: that label's areas take
+   * that pixel (a texture of one colour), and nothing fails. */
+  for (size_t i = 0; i < EX_W * EX_H; i++)
+    ex_labels[i] = i == 20 * EX_W + 30 ? 1.0f : 0.0f;
+  if (run_guided (&ex, &guides, 5, &out, sources, false) == TS_OK)
+    {
+      double everywhere = label_fidelity (target, ex_labels, sources, 0);
+      CHECK (everywhere == 1.0, "a one-pixel label in the exemplar: every pixel's source has "
+             "its label (%.4f)", everywhere);
+    }
+  else
+    CHECK (false, "a one-pixel label in the exemplar: guided synthesis ran");
   free (ex.pixels);
   free (out.pixels);
   free (ex_labels);
