@@ -164,13 +164,15 @@ mend_sources (const TsParams *params, const TsImage *exemplar, const uint8_t *ex
           size_t k = pass % 2 ? box_area (ob) - 1 - i : i;
           size_t x = ob->x0 + k % (ob->x1 - ob->x0), y = ob->y0 + k / (ob->x1 - ob->x0);
           int32_t *s = start + 2 * (y * out_w + x);
-          if (target_label[y * out_w + x] != label || ex_label[(size_t) s[1] * ew + (size_t) s[0]] == label)
+          if (target_label[y * out_w + x] != label ||
+              ex_label[(size_t) s[1] * ew + (size_t) s[0]] == label)
             continue;
           for (size_t d = 0; d < 4; d++)
             {
               ptrdiff_t nx = (ptrdiff_t) x + step[d][0], ny = (ptrdiff_t) y + step[d][1];
-              if (nx < (ptrdiff_t) ob->x0 || ny < (ptrdiff_t) ob->y0 || nx >= (ptrdiff_t) ob->x1 ||
-                  ny >= (ptrdiff_t) ob->y1 || target_label[(size_t) ny * out_w + (size_t) nx] != label)
+              if (nx < (ptrdiff_t) ob->x0 || ny < (ptrdiff_t) ob->y0 ||
+                  nx >= (ptrdiff_t) ob->x1 || ny >= (ptrdiff_t) ob->y1 ||
+                  target_label[(size_t) ny * out_w + (size_t) nx] != label)
                 continue;
               const int32_t *n = start + 2 * ((size_t) ny * out_w + (size_t) nx);
               ptrdiff_t sx = n[0] - step[d][0], sy = n[1] - step[d][1];
@@ -198,7 +200,8 @@ mend_sources (const TsParams *params, const TsImage *exemplar, const uint8_t *ex
     for (size_t x = ob->x0; x < ob->x1; x++)
       {
         int32_t *s = start + 2 * (y * out_w + x);
-        if (target_label[y * out_w + x] == label && ex_label[(size_t) s[1] * ew + (size_t) s[0]] != label)
+        if (target_label[y * out_w + x] == label &&
+            ex_label[(size_t) s[1] * ew + (size_t) s[0]] != label)
           {
             s[0] = (int32_t) (first % ew);
             s[1] = (int32_t) (first / ew);
