@@ -189,6 +189,20 @@ test_texture_by_numbers (void)
   free (sources);
 }
 
+/* Runs the guides in layers; every pixel's source must have its label. */
+static void
+expect_every_label (const TsImage *ex, const TsGuides *guides, TsImage *out, int32_t *sources,
+                    const char *what)
+{
+  if (run_guided (ex, guides, 5, out, sources, false) != TS_OK)
+    {
+      CHECK (false, "%s: guided synthesis ran", what);
+      return;
+    }
+  double everywhere = label_fidelity (guides->target_guide, guides->exemplar_guide, sources, 0);
+  CHECK (everywhere == 1.0, "%s: every pixel's source has its label (%.4f)", what, everywhere);
+}
+
 /* Regions of one pixel and one pixel wide grow in layers too, each
  * pixel from its own label, in the target and in the exemplar. */
 static void
@@ -207,26 +221,12 @@ test_tiny_regions (void)
   ts_guides_init (&guides);
   guides.exemplar_guide = ex_labels;
   guides.target_guide = target;
-  if (run_guided (&ex, &guides, 5, &out, sources, false) == TS_OK)
-    {
-      double everywhere = label_fidelity (target, ex_labels, sources, 0);
-      CHECK (everywhere == 1.0, "a one-pixel dot and line: every pixel's source has its label "
-             "(%.4f)", everywhere);
-    }
-  else
-    CHECK (false, "a one-pixel dot and line: guided synthesis ran");
+  expect_every_label (&ex, &guides, &out, sources, "a one-pixel dot and line");
   /* An exemplar whose label 1 is a single pixel: that label's areas take
    * that pixel (a texture of one colour), and nothing fails. */
   for (size_t i = 0; i < EX_W * EX_H; i++)
     ex_labels[i] = i == 20 * EX_W + 30 ? 1.0f : 0.0f;
-  if (run_guided (&ex, &guides, 5, &out, sources, false) == TS_OK)
-    {
-      double everywhere = label_fidelity (target, ex_labels, sources, 0);
-      CHECK (everywhere == 1.0, "a one-pixel label in the exemplar: every pixel's source has "
-             "its label (%.4f)", everywhere);
-    }
-  else
-    CHECK (false, "a one-pixel label in the exemplar: guided synthesis ran");
+  expect_every_label (&ex, &guides, &out, sources, "a one-pixel label in the exemplar");
   free (ex.pixels);
   free (out.pixels);
   free (ex_labels);
