@@ -26,6 +26,17 @@
 #define TS_LAYER_MIN_SIDE 11
 /* Random stream of the layers' seeds (rng.h). */
 #define TS_LAYER_SEED_STREAM 11
+/* Each separate area of a label is synthesised over its own bounding
+ * box, so that a label scattered over the target costs about its own
+ * area, not its whole bounding box once per label. The box is grown to
+ * at least the size of the label's part of the exemplar, so that the
+ * synthesis has room for that texture's largest structures (a thin
+ * stripe of a box lays them out badly), and areas whose boxes come
+ * within the finest large neighbourhood of each other share one
+ * synthesis. A label of more areas than this (the specks of a painted
+ * map) is synthesised over its whole bounding box at once: each
+ * synthesis has a fixed cost, its exemplar's pyramid and candidates. */
+#define TS_LAYER_MAX_AREAS 64
 
 typedef struct
 {
@@ -93,12 +104,11 @@ bounding_boxes (const uint8_t *map, size_t w, size_t h, size_t count, Box *box)
       }
 }
 
-/* `b` grown on both sides to at least TS_LAYER_MIN_SIDE, within w x h. */
+/* `b` grown on both sides to at least min_w x min_h, within w x h. */
 static void
-grow_box (Box *b, size_t w, size_t h)
+grow_box (Box *b, size_t w, size_t h, size_t min_w, size_t min_h)
 {
-  size_t side_w = w < TS_LAYER_MIN_SIDE ? w : TS_LAYER_MIN_SIDE;
-  size_t side_h = h < TS_LAYER_MIN_SIDE ? h : TS_LAYER_MIN_SIDE;
+  size_t side_w = w < min_w ? w : min_w, side_h = h < min_h ? h : min_h;
 
   while (b->x1 - b->x0 < side_w)
     {
@@ -210,12 +220,13 @@ mend_sources (const TsParams *params, const TsImage *exemplar, const uint8_t *ex
 }
 
 /* A plain synthesis of `label`'s texture over the box `ob` of the
- * output; its sources go to start[] at the pixels the target gives that
- * label, in the whole exemplar's coordinates. */
+ * output (the label's `area`-th); its sources go to start[] at the
+ * pixels the target gives that label, in the whole exemplar's
+ * coordinates. */
 static TsStatus
 synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t *ex_label,
-                  const uint8_t *target_label, uint8_t label, const Box *ob, int32_t *start,
-                  Part *part, TsError *error)
+                  const uint8_t *target_label, uint8_t label, uint32_t area, const Box *ob,
+                  int32_t *start, Part *part, TsError *error)
 {
   size_t out_w = params->output_width;
   Box eb, ex_box[TS_MAX_GUIDE_LABELS];
@@ -226,7 +237,7 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
 
   bounding_boxes (ex_label, exemplar->width, exemplar->height, (size_t) label + 1, ex_box);
   eb = ex_box[label];
-  grow_box (&eb, exemplar->width, exemplar->height);
+  grow_box (&eb, exemplar->width, exemplar->height, TS_LAYER_MIN_SIDE, TS_LAYER_MIN_SIDE);
   status = layer_exemplar (exemplar, ex_label, label, &eb, &layer);
   result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
   sources = malloc (result.width * result.height * 2 * sizeof (int32_t));
@@ -238,7 +249,7 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
       p.output_height = result.height;
       p.wrap_x = params->wrap_x && result.width == params->output_width;
       p.wrap_y = params->wrap_y && result.height == params->output_height;
-      p.seed = (uint32_t) ts_random (params->seed, 0, 0, label, TS_LAYER_SEED_STREAM);
+      p.seed = (uint32_t) ts_random (params->seed, 0, area, label, TS_LAYER_SEED_STREAM);
       p.guides = NULL;
       p.source_map = sources;
       status = ts_params_validate (&p, &layer, error);
@@ -263,6 +274,81 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
   return status;
 }
 
+/* Whether boxes a and b, each grown by `gap`, overlap. */
+static bool
+boxes_near (const Box *a, const Box *b, size_t gap)
+{
+  return a->x0 < b->x1 + gap && b->x0 < a->x1 + gap && a->y0 < b->y1 + gap &&
+         b->y0 < a->y1 + gap;
+}
+
+/* The bounding boxes of the separate areas of `label` in the target
+ * (4-connected, across a wrapped side too), each grown to at least
+ * min_w x min_h, those near each other joined; false if there are more
+ * than TS_LAYER_MAX_AREAS. `seen` and `stack` hold a byte and a size_t
+ * per output pixel. */
+static bool
+label_areas (const TsParams *params, const uint8_t *target_label, uint8_t label, size_t min_w,
+             size_t min_h, uint8_t *seen, size_t *stack, Box *area, size_t *count)
+{
+  size_t w = params->output_width, h = params->output_height, n = w * h;
+
+  *count = 0;
+  memset (seen, 0, n);
+  for (size_t start = 0; start < n; start++)
+    {
+      if (seen[start] || target_label[start] != label)
+        continue;
+      if (*count == TS_LAYER_MAX_AREAS)
+        return false;
+      Box b = { w, h, 0, 0 };
+      size_t top = 0;
+      stack[top++] = start;
+      seen[start] = 1;
+      while (top > 0)
+        {
+          size_t p = stack[--top], x = p % w, y = p / w;
+          size_t next[4];
+          int k = 0;
+          b.x0 = x < b.x0 ? x : b.x0;
+          b.x1 = x + 1 > b.x1 ? x + 1 : b.x1;
+          b.y0 = y < b.y0 ? y : b.y0;
+          b.y1 = y + 1 > b.y1 ? y + 1 : b.y1;
+          if (x > 0 || params->wrap_x)
+            next[k++] = y * w + (x > 0 ? x - 1 : w - 1);
+          if (x + 1 < w || params->wrap_x)
+            next[k++] = y * w + (x + 1 < w ? x + 1 : 0);
+          if (y > 0 || params->wrap_y)
+            next[k++] = (y > 0 ? y - 1 : h - 1) * w + x;
+          if (y + 1 < h || params->wrap_y)
+            next[k++] = (y + 1 < h ? y + 1 : 0) * w + x;
+          for (int i = 0; i < k; i++)
+            if (!seen[next[i]] && target_label[next[i]] == label)
+              {
+                seen[next[i]] = 1;
+                stack[top++] = next[i];
+              }
+        }
+      grow_box (&b, w, h, min_w, min_h);
+      area[(*count)++] = b;
+    }
+  /* Join boxes near each other until none are. */
+  for (size_t i = 0; i < *count; i++)
+    for (size_t j = i + 1; j < *count; j++)
+      if (boxes_near (&area[i], &area[j], TS_LAYER_MIN_SIDE / 2))
+        {
+          Box *a = &area[i], *b = &area[j];
+          a->x0 = a->x0 < b->x0 ? a->x0 : b->x0;
+          a->y0 = a->y0 < b->y0 ? a->y0 : b->y0;
+          a->x1 = a->x1 > b->x1 ? a->x1 : b->x1;
+          a->y1 = a->y1 > b->y1 ? a->y1 : b->y1;
+          area[j] = area[--*count];
+          i = (size_t) -1; /* start over: the grown box may now be near others */
+          break;
+        }
+  return true;
+}
+
 /* The result and the caller's source map from the layers' sources. */
 static void
 write_layers (const TsParams *params, const TsImage *exemplar, const int32_t *start,
@@ -279,37 +365,58 @@ TsStatus
 ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
                             TsProgressFunc progress, void *user_data, TsError *error)
 {
-  size_t out_w = params->output_width, out_h = params->output_height, count = 0;
-  uint8_t *ex_label = NULL, *target_label = NULL;
-  int32_t *start = malloc (out_w * out_h * 2 * sizeof (int32_t));
-  Box box[TS_MAX_GUIDE_LABELS];
+  size_t out_w = params->output_width, out_h = params->output_height, n = out_w * out_h;
+  size_t count = 0, areas[TS_MAX_GUIDE_LABELS];
+  uint8_t *ex_label = NULL, *target_label = NULL, *seen = malloc (n);
+  size_t *stack = malloc (n * sizeof (size_t));
+  int32_t *start = malloc (n * 2 * sizeof (int32_t));
+  Box box[TS_MAX_GUIDE_LABELS], ex_box[TS_MAX_GUIDE_LABELS], *area = malloc (TS_MAX_GUIDE_LABELS * TS_LAYER_MAX_AREAS * sizeof (Box));
   double total = 0.0, done = 0.0;
   Part part = { progress, user_data, 0.0, 0.0 };
-  TsStatus status = start ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
+  TsStatus status = start && seen && stack && area ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
 
   if (status == TS_OK)
     status = label_maps (params, exemplar, &ex_label, &target_label, &count);
   if (status != TS_OK)
     ts_fail (error, status, "%s", ts_status_string (status));
-  /* Progress: each layer by its area. */
   if (status == TS_OK)
-    bounding_boxes (target_label, out_w, out_h, count, box);
+    {
+      bounding_boxes (target_label, out_w, out_h, count, box);
+      bounding_boxes (ex_label, exemplar->width, exemplar->height, count, ex_box);
+    }
+  /* Each label's areas, or its whole box; progress counts their areas. */
   for (size_t l = 0; status == TS_OK && l < count; l++)
-    if (box[l].x1 > box[l].x0)
-      total += (double) box_area (&box[l]);
+    {
+      Box *mine = area + l * TS_LAYER_MAX_AREAS;
+      areas[l] = 0;
+      if (box[l].x1 <= box[l].x0)
+        continue;
+      if (!label_areas (params, target_label, (uint8_t) l, ex_box[l].x1 - ex_box[l].x0,
+                        ex_box[l].y1 - ex_box[l].y0, seen, stack, mine, &areas[l]))
+        {
+          mine[0] = box[l];
+          areas[l] = 1;
+        }
+      for (size_t a = 0; a < areas[l]; a++)
+        total += (double) box_area (&mine[a]);
+    }
   for (size_t l = 0; status == TS_OK && l < count; l++)
-    if (box[l].x1 > box[l].x0)
+    for (size_t a = 0; status == TS_OK && a < areas[l]; a++)
       {
+        const Box *b = &area[l * TS_LAYER_MAX_AREAS + a];
         part.start = done / total;
-        part.span = (double) box_area (&box[l]) / total;
-        status = synthesize_layer (params, exemplar, ex_label, target_label, (uint8_t) l, &box[l],
-                                   start, &part, error);
-        done += (double) box_area (&box[l]);
+        part.span = (double) box_area (b) / total;
+        status = synthesize_layer (params, exemplar, ex_label, target_label, (uint8_t) l,
+                                   (uint32_t) a, b, start, &part, error);
+        done += (double) box_area (b);
       }
   if (status == TS_OK)
     write_layers (params, exemplar, start, output);
   free (ex_label);
   free (target_label);
+  free (seen);
+  free (stack);
   free (start);
+  free (area);
   return status;
 }

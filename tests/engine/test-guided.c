@@ -227,6 +227,13 @@ test_tiny_regions (void)
   for (size_t i = 0; i < EX_W * EX_H; i++)
     ex_labels[i] = i == 20 * EX_W + 30 ? 1.0f : 0.0f;
   expect_every_label (&ex, &guides, &out, sources, "a one-pixel label in the exemplar");
+  /* More specks than a label is split into separate syntheses for. */
+  free (ex.pixels);
+  two_texture_exemplar (&ex, ex_labels);
+  for (size_t y = 0; y < OUT; y++)
+    for (size_t x = 0; x < OUT; x++)
+      target[y * OUT + x] = x % 12 == 5 && y % 12 == 5 ? 1.0f : 0.0f;
+  expect_every_label (&ex, &guides, &out, sources, "169 one-pixel specks");
   free (ex.pixels);
   free (out.pixels);
   free (ex_labels);
