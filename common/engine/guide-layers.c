@@ -219,24 +219,22 @@ mend_sources (const TsParams *params, const TsImage *exemplar, const uint8_t *ex
       }
 }
 
-/* A plain synthesis of `label`'s texture over the box `ob` of the
- * output (the label's `area`-th); its sources go to start[] at the
- * pixels the target gives that label, in the whole exemplar's
- * coordinates. */
+/* A plain synthesis of `label`'s texture (its pixels inside `ex_box`,
+ * their bounding box in the exemplar) over the box `ob` of the output
+ * (the label's `area`-th); its sources go to start[] at the pixels the
+ * target gives that label, in the whole exemplar's coordinates. */
 static TsStatus
 synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t *ex_label,
-                  const uint8_t *target_label, uint8_t label, uint32_t area, const Box *ob,
-                  int32_t *start, Part *part, TsError *error)
+                  const Box *ex_box, const uint8_t *target_label, uint8_t label, uint32_t area,
+                  const Box *ob, int32_t *start, Part *part, TsError *error)
 {
   size_t out_w = params->output_width;
-  Box eb, ex_box[TS_MAX_GUIDE_LABELS];
+  Box eb = *ex_box;
   TsImage layer = { 0 }, result = { ob->x1 - ob->x0, ob->y1 - ob->y0, NULL };
   int32_t *sources = NULL;
   TsParams p = *params;
   TsStatus status;
 
-  bounding_boxes (ex_label, exemplar->width, exemplar->height, (size_t) label + 1, ex_box);
-  eb = ex_box[label];
   grow_box (&eb, exemplar->width, exemplar->height, TS_LAYER_MIN_SIDE, TS_LAYER_MIN_SIDE);
   status = layer_exemplar (exemplar, ex_label, label, &eb, &layer);
   result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
@@ -370,7 +368,8 @@ ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsI
   uint8_t *ex_label = NULL, *target_label = NULL, *seen = malloc (n);
   size_t *stack = malloc (n * sizeof (size_t));
   int32_t *start = malloc (n * 2 * sizeof (int32_t));
-  Box box[TS_MAX_GUIDE_LABELS], ex_box[TS_MAX_GUIDE_LABELS], *area = malloc (TS_MAX_GUIDE_LABELS * TS_LAYER_MAX_AREAS * sizeof (Box));
+  Box box[TS_MAX_GUIDE_LABELS], ex_box[TS_MAX_GUIDE_LABELS];
+  Box *area = malloc (TS_MAX_GUIDE_LABELS * TS_LAYER_MAX_AREAS * sizeof (Box));
   double total = 0.0, done = 0.0;
   Part part = { progress, user_data, 0.0, 0.0 };
   TsStatus status = start && seen && stack && area ? TS_OK : TS_ERROR_OUT_OF_MEMORY;
@@ -406,8 +405,8 @@ ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsI
         const Box *b = &area[l * TS_LAYER_MAX_AREAS + a];
         part.start = done / total;
         part.span = (double) box_area (b) / total;
-        status = synthesize_layer (params, exemplar, ex_label, target_label, (uint8_t) l,
-                                   (uint32_t) a, b, start, &part, error);
+        status = synthesize_layer (params, exemplar, ex_label, &ex_box[l], target_label,
+                                   (uint8_t) l, (uint32_t) a, b, start, &part, error);
         done += (double) box_area (b);
       }
   if (status == TS_OK)
