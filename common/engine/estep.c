@@ -296,7 +296,7 @@ vote_row (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
       float keep = 0.0f;
 
       /* Weight 1 keeps the pixel at its initial source (see start_sources). */
-      if (state->preserve && state->preserve[p] >= 1.0f)
+      if ((state->preserve && state->preserve[p] >= 1.0f) || (state->active && !state->active[p]))
         continue;
       votes_reset (&v);
       collect (&v, state, gx, gy, matches, histogram, x, y);

@@ -232,6 +232,7 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
   Box eb = *ex_box;
   TsImage layer = { 0 }, result = { ob->x1 - ob->x0, ob->y1 - ob->y0, NULL };
   int32_t *sources = NULL;
+  uint8_t *needed = NULL;
   TsParams p = *params;
   TsStatus status;
 
@@ -239,8 +240,14 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
   status = layer_exemplar (exemplar, ex_label, label, &eb, &layer);
   result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
   sources = malloc (result.width * result.height * 2 * sizeof (int32_t));
-  if (status == TS_OK && (!result.pixels || !sources))
+  needed = malloc (result.width * result.height);
+  if (status == TS_OK && (!result.pixels || !sources || !needed))
     status = TS_ERROR_OUT_OF_MEMORY;
+  /* Only the label's own pixels of the box are kept: the synthesis
+   * optimizes them and their neighbourhoods, not the whole box. */
+  for (size_t y = ob->y0; status == TS_OK && y < ob->y1; y++)
+    for (size_t x = ob->x0; x < ob->x1; x++)
+      needed[(y - ob->y0) * result.width + x - ob->x0] = target_label[y * out_w + x] == label;
   if (status == TS_OK)
     {
       p.output_width = result.width;
@@ -252,8 +259,8 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
       p.source_map = sources;
       status = ts_params_validate (&p, &layer, error);
       if (status == TS_OK)
-        status = ts_synthesize_optimized (&p, &layer, &result, part->func ? part_report : NULL,
-                                          part, error);
+        status = ts_synthesize_needed (&p, &layer, needed, &result,
+                                       part->func ? part_report : NULL, part, error);
     }
   if (status == TS_OK)
     for (size_t y = ob->y0; y < ob->y1; y++)
@@ -269,6 +276,7 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
   free (layer.pixels);
   free (result.pixels);
   free (sources);
+  free (needed);
   return status;
 }
 

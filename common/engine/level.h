@@ -30,6 +30,8 @@ typedef struct
   TsCancel             *cancel;     /* polled by both steps, or NULL        */
   const TsGuideLevel   *guide;      /* guides of this level, or NULL        */
   const TsRegionBound  *region_bound; /* cut pixels of oversized coherent regions, or NULL */
+  const uint8_t        *active;     /* per pixel: the E-step updates it, or NULL for all */
+  const uint8_t        *active_centres; /* per pixel: the M-step matches there; set with active */
 } TsLevelState;
 
 /* Neighbourhood centres of one iteration along one axis, plus for every

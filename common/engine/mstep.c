@@ -298,7 +298,10 @@ ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
         size_t jx = (size_t) i % gx->centres, jy = (size_t) i / gx->centres;
         ptrdiff_t cx = ts_axis_grid_centre (gx, jx), cy = ts_axis_grid_centre (gy, jy);
 
-        if (state->preserve && frozen (state, cx, cy, radius))
+        if ((state->preserve && frozen (state, cx, cy, radius))
+            || (state->active_centres
+                && !state->active_centres[ts_border_index (cy, state->height, state->wrap_y) * state->width
+                                          + ts_border_index (cx, state->width, state->wrap_x)]))
           {
             matches[i].centre = -1;
             matches[i].clipped = false;

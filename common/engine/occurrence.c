@@ -55,7 +55,8 @@ ts_occurrence_free (TsOccurrence *occ)
 }
 
 void
-ts_occurrence_count (const int32_t *source, size_t count, uint32_t *usage, size_t exemplar_pixels)
+ts_occurrence_count (const int32_t *source, const uint8_t *mask, size_t count, uint32_t *usage,
+                     size_t exemplar_pixels)
 {
   size_t threads = 1;
   uint32_t *partial = NULL;
@@ -72,7 +73,7 @@ ts_occurrence_count (const int32_t *source, size_t count, uint32_t *usage, size_
     {
       memset (usage, 0, exemplar_pixels * sizeof (uint32_t));
       for (size_t i = 0; i < count; i++)
-        if (source[i] >= 0)
+        if (source[i] >= 0 && (!mask || mask[i]))
           usage[source[i]]++;
       return;
     }
@@ -85,7 +86,7 @@ ts_occurrence_count (const int32_t *source, size_t count, uint32_t *usage, size_
 #endif
     uint32_t *mine = partial + t * exemplar_pixels;
     for (size_t i = count * t / n; i < count * (t + 1) / n; i++)
-      if (source[i] >= 0)
+      if (source[i] >= 0 && (!mask || mask[i]))
         mine[source[i]]++;
 #pragma omp barrier
 #pragma omp for schedule(static)

@@ -20,12 +20,12 @@ typedef struct
 TsStatus ts_occurrence_init (TsOccurrence *occ, const TsImage *exemplar, float strength);
 void     ts_occurrence_free (TsOccurrence *occ);
 
-/* How many of the `count` output pixels use each exemplar pixel as their
- * source: `usage` gets one entry per exemplar pixel (`exemplar_pixels`).
- * The one pass over the output that both the penalty and the histogram
- * need. */
-void     ts_occurrence_count (const int32_t *source, size_t count, uint32_t *usage,
-                              size_t exemplar_pixels);
+/* How many of the `count` output pixels (those `mask` marks, or all if
+ * it is NULL) use each exemplar pixel as their source: `usage` gets one
+ * entry per exemplar pixel (`exemplar_pixels`). The one pass over the
+ * output that both the penalty and the histogram need. */
+void     ts_occurrence_count (const int32_t *source, const uint8_t *mask, size_t count,
+                              uint32_t *usage, size_t exemplar_pixels);
 
 /* Recomputes the penalty of every centre for neighbourhoods of side
  * `patch` from the usage counts of `count` output pixels. */

@@ -3,6 +3,7 @@
  * inherit it by coordinate upsampling.
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "quilt-start.h"
+#include "active-region.h"
 #include "image.h"
 #include "rng.h"
 
@@ -63,10 +64,10 @@ pixel_sq_distance (const float *a, const float *b)
 
 /* Sum of squared differences, over the overlap of the patch at output
  * (ox, oy) of size pw x ph, between what is laid there and the exemplar
- * patch at (cx, cy). */
+ * patch at (cx, cy); once the sum passes `bound`, the partial sum. */
 static float
 overlap_error (const TsLevelState *state, size_t ox, size_t oy, size_t pw, size_t ph,
-               size_t overlap, bool left, bool top, size_t cx, size_t cy)
+               size_t overlap, bool left, bool top, size_t cx, size_t cy, float bound)
 {
   const TsImage *ex = state->exemplar;
   float sum = 0.0f;
@@ -79,6 +80,8 @@ overlap_error (const TsLevelState *state, size_t ox, size_t oy, size_t pw, size_
       for (size_t x = 0; x < x_end; x++)
         sum += pixel_sq_distance (ex->pixels + (size_t) laid[x] * TS_CHANNELS,
                                   cand + x * TS_CHANNELS);
+      if (sum > bound)
+        break;
     }
   return sum;
 }
@@ -193,44 +196,71 @@ choose_corner (const TsLevelState *state, const Layout *g, Scratch *s, const int
   if (!left && !top)
     return (size_t) ts_random_below (r, ncand);
 
-#pragma omp parallel for schedule(static)
-  for (ptrdiff_t c = 0; c < (ptrdiff_t) ncand; c++)
-    s->error[c] = overlap_error (state, ox, oy, pw, ph, g->overlap, left, top,
-                                 (size_t) c % g->cand_w, (size_t) c / g->cand_w);
-
-  for (int strict = 1; strict >= 0; strict--)
-    {
-      float best = FLT_MAX;
-      size_t eligible = 0;
-      for (size_t c = 0; c < ncand; c++)
-        {
-          size_t cx = c % g->cand_w, cy = c / g->cand_w;
-          if (strict && ((left && continues (cx, cy, left_corner, g->step, 0, g->overlap)) ||
-                         (top && continues (cx, cy, top_corner, 0, g->step, g->overlap))))
+  /* A corner that only continues a neighbour is left out (FLT_MAX). A
+   * sum is cut short once it passes the tolerance around the thread's
+   * best so far: the best of all is no larger, so such a corner could
+   * not be picked either, and the pick is the same as with whole sums. */
+#pragma omp parallel
+  {
+    float mine = FLT_MAX;
+#pragma omp for schedule(static)
+    for (ptrdiff_t c = 0; c < (ptrdiff_t) ncand; c++)
+      {
+        size_t cx = (size_t) c % g->cand_w, cy = (size_t) c / g->cand_w;
+        if ((left && continues (cx, cy, left_corner, g->step, 0, g->overlap)) ||
+            (top && continues (cx, cy, top_corner, 0, g->step, g->overlap)))
+          {
             s->error[c] = FLT_MAX;
-          else if (s->error[c] < best)
-            best = s->error[c];
-        }
-      if (best == FLT_MAX)
-        continue;
-      float limit = best * (1.0f + (float) TS_QUILT_TOLERANCE);
-      uint32_t least = UINT32_MAX;
-      for (size_t c = 0; c < ncand; c++)
-        if (s->error[c] <= limit && s->usage[c] < least)
-          least = s->usage[c];
-      for (size_t c = 0; c < ncand; c++)
-        eligible += s->error[c] <= limit && s->usage[c] == least;
-      size_t pick = (size_t) ts_random_below (r, eligible);
-      for (size_t c = 0; c < ncand; c++)
-        if (s->error[c] <= limit && s->usage[c] == least && pick-- == 0)
-          return c;
-    }
+            continue;
+          }
+        s->error[c] = overlap_error (state, ox, oy, pw, ph, g->overlap, left, top, cx, cy,
+                                     mine * (1.0f + (float) TS_QUILT_TOLERANCE));
+        mine = s->error[c] < mine ? s->error[c] : mine;
+      }
+  }
+
+  float best = FLT_MAX;
+  for (size_t c = 0; c < ncand; c++)
+    best = s->error[c] < best ? s->error[c] : best;
+  if (best == FLT_MAX)
+    return (size_t) ts_random_below (r, ncand);
+  float limit = best * (1.0f + (float) TS_QUILT_TOLERANCE);
+  uint32_t least = UINT32_MAX;
+  size_t eligible = 0;
+  for (size_t c = 0; c < ncand; c++)
+    if (s->error[c] <= limit && s->usage[c] < least)
+      least = s->usage[c];
+  for (size_t c = 0; c < ncand; c++)
+    eligible += s->error[c] <= limit && s->usage[c] == least;
+  size_t pick = (size_t) ts_random_below (r, eligible);
+  for (size_t c = 0; c < ncand; c++)
+    if (s->error[c] <= limit && s->usage[c] == least && pick-- == 0)
+      return c;
   return (size_t) ts_random_below (r, ncand);
 }
 
-/* Lays the quilt over the whole of `state` (its sources). */
+/* Whether the canvas patch at (ox, oy), pw x ph, covers a pixel of
+ * `active` (a mask of the level, `shift` pixels right of and below the
+ * canvas's corner), or there is no mask. */
+static bool
+patch_active (const TsLevelState *level_state, size_t shift, size_t ox, size_t oy, size_t pw,
+              size_t ph)
+{
+  if (!level_state->active)
+    return true;
+  if (ox + pw <= shift || oy + ph <= shift)
+    return false;
+  return ts_active_any (level_state->active, level_state->width, level_state->height,
+                        ox > shift ? ox - shift : 0, oy > shift ? oy - shift : 0,
+                        ox + pw - shift, oy + ph - shift);
+}
+
+/* Lays the quilt over the whole of `state` (its sources). Patches that
+ * cover no active pixel of `level_state` are laid at a seeded corner
+ * without matching: nothing needed is near them. */
 static TsStatus
-quilt (TsLevelState *state, uint32_t seed, uint32_t level)
+quilt (TsLevelState *state, uint32_t seed, uint32_t level, const TsLevelState *level_state,
+       size_t shift)
 {
   const TsImage *ex = state->exemplar;
   Layout g;
@@ -263,18 +293,20 @@ quilt (TsLevelState *state, uint32_t seed, uint32_t level)
       for (size_t j = 0; j < g.cols; j++)
         {
           uint64_t r = ts_random (seed, level, 0, i * g.cols + j, 6);
-          size_t c = choose_corner (state, &g, &s, corner, i, j, r);
-          size_t cx = c % g.cand_w, cy = c / g.cand_w;
           size_t ox = j * g.step, oy = i * g.step;
           size_t pw = state->width - ox < g.patch ? state->width - ox : g.patch;
           size_t ph = state->height - oy < g.patch ? state->height - oy : g.patch;
+          bool matched = patch_active (level_state, shift, ox, oy, pw, ph);
+          size_t c = matched ? choose_corner (state, &g, &s, corner, i, j, r)
+                             : (size_t) ts_random_below (r, g.cand_w * g.cand_h);
+          size_t cx = c % g.cand_w, cy = c / g.cand_w;
 
-          for (size_t uy = cy > g.overlap ? cy - g.overlap : 0; uy <= cy + g.overlap && uy < g.cand_h; uy++)
+          for (size_t uy = cy > g.overlap ? cy - g.overlap : 0; matched && uy <= cy + g.overlap && uy < g.cand_h; uy++)
             for (size_t ux = cx > g.overlap ? cx - g.overlap : 0; ux <= cx + g.overlap && ux < g.cand_w; ux++)
               s.usage[uy * g.cand_w + ux]++;
           corner[2 * (i * g.cols + j)] = (int32_t) cx;
           corner[2 * (i * g.cols + j) + 1] = (int32_t) cy;
-          cut_overlaps (state, &g, &s, ox, oy, pw, ph, j > 0, i > 0, cx, cy);
+          cut_overlaps (state, &g, &s, ox, oy, pw, ph, matched && j > 0, matched && i > 0, cx, cy);
           for (size_t y = 0; y < ph; y++)
             for (size_t x = 0; x < pw; x++)
               if (!s.keep[y * pw + x])
@@ -309,10 +341,11 @@ ts_quilt_start (TsLevelState *state, uint32_t seed, uint32_t level)
   margin = g.step;
   canvas.width = state->width + margin;
   canvas.height = state->height + margin;
+  canvas.active = canvas.active_centres = NULL;
   canvas.source = malloc (canvas.width * canvas.height * sizeof (int32_t));
   if (!canvas.source)
     return TS_ERROR_OUT_OF_MEMORY;
-  status = quilt (&canvas, seed, level);
+  status = quilt (&canvas, seed, level, state, margin);
   for (size_t y = 0; status == TS_OK && y < state->height; y++)
     memcpy (state->source + y * state->width, canvas.source + (y + margin) * canvas.width + margin,
             state->width * sizeof (int32_t));

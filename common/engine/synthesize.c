@@ -2,6 +2,7 @@
  * k-coherence search over MRPM candidate sets).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "synthesize.h"
+#include "active-region.h"
 #include "lattice.h"
 #include "level.h"
 #include "occurrence.h"
@@ -33,6 +34,7 @@
 typedef struct
 {
   const TsParams *params;
+  const uint8_t  *needed;        /* output pixels the caller needs, or NULL */
   TsProgress      progress;
   TsCancel        cancel;        /* lets the steps ask `progress` midway    */
   const char     *stage;         /* what a midway report says             */
@@ -221,17 +223,21 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
   uint32_t *usage;
   TsStatus status;
   float occ_strength = level > 0 ? TS_OCCURRENCE_STRENGTH : 0.0f;
-  size_t free_pixels = pixels;
+  size_t free_pixels = pixels, counted = state->active ? 0 : pixels;
   TsRegionBound region_bound = { 0 };
 
   /* Convergence is judged on the pixels that may change: with most of
    * the output preserved, a fraction of all pixels would stop the
    * optimization of the rest early. */
-  if (state->preserve)
+  if (state->active)
+    for (size_t p = 0; p < pixels; p++)
+      counted += state->active[p] != 0;
+  if (state->preserve || state->active)
     {
       free_pixels = 0;
       for (size_t p = 0; p < pixels; p++)
-        free_pixels += state->preserve[p] < 1.0f;
+        free_pixels += (!state->preserve || state->preserve[p] < 1.0f)
+                       && (!state->active || state->active[p]);
     }
 
   usage = malloc (ts_image_pixel_count (state->exemplar) * sizeof (uint32_t));
@@ -301,10 +307,10 @@ optimize_level (Run *run, TsLevelState *state, const TsLevelPlan *plan, size_t l
           /* The M-step leaves the sources alone: one count serves the
            * penalty now and the histogram after it. */
           if (state->penalty || histogram)
-            ts_occurrence_count (state->source, pixels, usage,
+            ts_occurrence_count (state->source, state->active, pixels, usage,
                                  ts_image_pixel_count (state->exemplar));
           if (state->penalty)
-            ts_occurrence_update (&occurrence, usage, pixels, pass->patch, state->opaque_count);
+            ts_occurrence_update (&occurrence, usage, counted, pass->patch, state->opaque_count);
           if (state->region_bound)
             ts_region_bound_mark (&region_bound, state->source, state->exemplar->width);
           matches = malloc (gx.centres * gy.centres * sizeof (TsMatch));
@@ -384,6 +390,7 @@ typedef struct
   float          *disagreement;
   TsGuidePyramid  guides;
   TsGuideLevel    guide_level;
+  TsActiveRegion  active;
 } Work;
 
 static void
@@ -393,6 +400,7 @@ work_free_level (Work *w)
   free (w->initial_source);
   free (w->initial_preserve);
   ts_guide_level_free (&w->guide_level);
+  ts_active_region_free (&w->active);
   w->opaque = NULL;
   w->initial_source = NULL;
   w->initial_preserve = NULL;
@@ -485,6 +493,19 @@ synthesize_level (Run *run, Work *w, size_t level)
       state->preserve_source = w->initial_source;
       state->preserve = w->initial_preserve;
     }
+  if (run->needed)
+    {
+      size_t patch = plan.pass[0].patch;
+      for (size_t p = 1; p < plan.passes; p++)
+        patch = plan.pass[p].patch > patch ? plan.pass[p].patch : patch;
+      status = ts_active_region_init (&w->active, run->needed, params->output_width,
+                                      params->output_height, level, state->width, state->height,
+                                      patch / 2, params->wrap_x, params->wrap_y);
+      if (status != TS_OK)
+        return status;
+      state->active = w->active.pixels;
+      state->active_centres = w->active.centres;
+    }
   status = start_sources (state, params, level, plan.pass[0].patch, w->coarser_source,
                           w->coarser_width, w->coarser_ex_width);
   if (status != TS_OK)
@@ -545,7 +566,15 @@ TsStatus
 ts_synthesize_optimized (const TsParams *params, const TsImage *exemplar, TsImage *output,
                          TsProgressFunc progress, void *user_data, TsError *error)
 {
-  Run run = { .params = params, .progress = { .func = progress, .user_data = user_data },
+  return ts_synthesize_needed (params, exemplar, NULL, output, progress, user_data, error);
+}
+
+TsStatus
+ts_synthesize_needed (const TsParams *params, const TsImage *exemplar, const uint8_t *needed,
+                      TsImage *output, TsProgressFunc progress, void *user_data, TsError *error)
+{
+  Run run = { .params = params, .needed = needed,
+             .progress = { .func = progress, .user_data = user_data },
              .stage = "matching exemplar" };
   Work w;
   TsStatus status;

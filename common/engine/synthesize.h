@@ -13,4 +13,12 @@ TsStatus ts_synthesize_optimized (const TsParams *params, const TsImage *exempla
                                   TsImage *output, TsProgressFunc progress, void *user_data,
                                   TsError *error);
 
+/* As ts_synthesize_optimized, for a caller that needs only the output
+ * pixels `needed` marks (one byte per output pixel, non-zero = needed):
+ * each level optimizes those and the neighbourhoods around them
+ * (active-region.h); the rest keep their start, a rougher texture. */
+TsStatus ts_synthesize_needed (const TsParams *params, const TsImage *exemplar,
+                               const uint8_t *needed, TsImage *output, TsProgressFunc progress,
+                               void *user_data, TsError *error);
+
 #endif
