@@ -179,11 +179,12 @@ ts_guides_estimate_bytes (const TsParams *params, const TsImage *exemplar)
    * the estimate's FFT of at most 1024x1024 complex doubles. */
   double lattice = (ex + out) * 16.0 / 3.0 + ex * 4.0 + fmin (4.0 * ex, 1024.0 * 1024.0) * 16.0;
   if (ts_guide_layers_apply (params, exemplar))
-    /* Layers: their sources, both label maps, one layer's result and
-     * sources, one layer's exemplar, and the lattice guide a layer's
-     * plain synthesis may build; that synthesis needs no more than a
-     * plain one of the output's size. */
-    return out * 8.0 + (out + ex) + out * (16.0 + 8.0) + ex * 16.0 + lattice;
+    /* Layers: their sources, both label maps, one layer's result,
+     * sources and needed pixels, one layer's exemplar, the lattice guide
+     * a layer's plain synthesis may build and that synthesis's active
+     * region (active-region.c: two masks and two temporaries); it needs
+     * no more than a plain one of the output's size otherwise. */
+    return out * 8.0 + (out + ex) + out * (16.0 + 8.0 + 1.0) + ex * 16.0 + lattice + out * 4.0;
   if (!params->guides)
     return lattice;
   /* Value pyramids of both guides (labels take less), the exemplar's
