@@ -1,5 +1,6 @@
 /* E-step: robust voting of the matched neighbourhoods, keeping the vote
- * closest to the weighted mean (sharp output, exact source coordinates).
+ * closest to the weighted mean or the source with the most vote weight
+ * (sharp output, exact source coordinates).
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "clones.h"
 #include "level.h"
@@ -79,14 +80,44 @@ choose_listed (Votes *v)
       }
 }
 
+/* The listed source with the most vote weight, the first of equals:
+ * the copy the covering neighbourhoods agree on. */
+static void
+choose_consensus (Votes *v)
+{
+  float most = -1.0f;
+
+  for (size_t i = 0; i < v->count; i++)
+    {
+      float weight = 0.0f;
+      size_t j = 0;
+      while (j < i && v->source[j] != v->source[i])
+        j++;
+      if (j < i)
+        continue;   /* counted at its first listing */
+      for (; j < v->count; j++)
+        if (v->source[j] == v->source[i])
+          weight += v->vote_weight[j];
+      if (weight > most)
+        {
+          most = weight;
+          v->best_source = v->source[i];
+          v->best_distance = distance_to_mean (v, v->value[0][i], v->value[1][i],
+                                               v->value[2][i], v->value[3][i]);
+        }
+    }
+}
+
 /* Appends a vote to the list, or notes that it is full. */
 static inline void
-list_vote (Votes *v, size_t *count, bool *overflow, int32_t source, const float *value)
+list_vote (Votes *v, size_t *count, bool *overflow, int32_t source, const float *value,
+           float weight)
 {
   size_t i = *count;
   if (i < TS_LOCAL_VOTES)
     {
       v->source[i] = source;
+      v->vote_weight[i] = weight;
       for (int c = 0; c < TS_CHANNELS; c++)
         v->value[c][i] = value[c];
       *count = i + 1;
@@ -113,7 +144,7 @@ add_vote (Votes *v, const TsImage *ex, int32_t source, float weight, bool any_al
   for (int c = 0; c < TS_CHANNELS; c++)
     v->sum[c] += weight * value[c];
   v->weight += weight;
-  list_vote (v, &v->count, &v->overflow, source, value);
+  list_vote (v, &v->count, &v->overflow, source, value, weight);
 }
 
 /* Every vote of the matched neighbourhoods covering (px, py), in a fixed
@@ -170,7 +201,7 @@ collect_pass (Votes *v, const TsLevelState *state, const TsAxisGrid *gx, const T
                   s2 += weight * value[2];
                   s3 += weight * value[3];
                   total += weight;
-                  list_vote (v, &count, &overflow, source, value);
+                  list_vote (v, &count, &overflow, source, value, weight);
                 }
             }
         }
@@ -315,7 +346,10 @@ vote_row (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,
       v.choosing = true;
       v.best_distance = INFINITY;
       v.best_source = -1;
-      if (!v.overflow)
+      /* An overflowing list (degenerate sizes) cannot count sources. */
+      if (!v.overflow && state->consensus)
+        choose_consensus (&v);
+      else if (!v.overflow)
         choose_listed (&v);
       else
         {

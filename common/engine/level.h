@@ -32,6 +32,8 @@ typedef struct
   const TsRegionBound  *region_bound; /* cut pixels of oversized coherent regions, or NULL */
   const uint8_t        *active;     /* per pixel: the E-step updates it, or NULL for all */
   const uint8_t        *active_centres; /* per pixel: the M-step matches there; set with active */
+  bool                  consensus;  /* the E-step keeps the source with the most
+                                       vote weight, not the vote nearest the mean */
 } TsLevelState;
 
 /* Neighbourhood centres of one iteration along one axis, plus for every
@@ -115,7 +117,8 @@ TsStatus ts_mstep (const TsLevelState *state, const TsAxisGrid *gx, const TsAxis
                    const TsPass *pass, size_t k_use, uint32_t seed_stream, TsMatch *matches);
 
 /* E-step: every output pixel becomes the vote closest to the robust
- * weighted mean of all matched neighbourhoods covering it; its source
+ * weighted mean of all matched neighbourhoods covering it (or, with
+ * `consensus`, the source they vote for with the most weight); its source
  * follows. Returns the number of pixels whose source changed; if
  * state->cancel is raised meanwhile, some rows are left as they were. */
 size_t   ts_estep (TsLevelState *state, const TsAxisGrid *gx, const TsAxisGrid *gy,

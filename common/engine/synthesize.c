@@ -476,6 +476,15 @@ synthesize_level (Run *run, Work *w, size_t level)
         return status;
       state->guide = &w->guide_level;
     }
+  /* Where the texture alone lays out the structures (the coarser
+   * levels, no guide), each pixel follows the copy its neighbourhoods
+   * agree on: the vote nearest their mean picked, where they disagreed,
+   * in-between tones that blurred thin structures away. Under a guide,
+   * the guide lays them out, and there agreeing copies held a lattice's
+   * phase less well. The finest level keeps the vote nearest the mean,
+   * which hides the seams between copies in smooth gradients
+   * (docs/benchmarks.md, "Consensus votes at the coarser levels"). */
+  state->consensus = level > 0 && !state->guide;
   if ((status = list_opaque (ex, &w->opaque, &state->opaque_count)) != TS_OK)
     return status;
   state->opaque = w->opaque;

@@ -22,12 +22,12 @@ from tsops import check, note
 # Medians over the exemplars of the plain results (see texsynth-measure
 # --help for the definitions): (measure, "max" or "min", bound). Each of
 # the first two bounds sits between a sound engine's medians (seeds 1 / 2
-# / 3: coherence 1.08 / 1.01 / 0.95, completeness 0.58 / 0.67 / 0.61)
+# / 3: coherence 1.03 / 0.91 / 0.86, completeness 0.48 / 0.57 / 0.61)
 # and a clearly worse engine's (one iteration per level, --set
-# iterations=1, seeds 1 / 2: 1.36 / 1.45 and 0.90 / 0.98; docs/
-# benchmarks.md). Sharpness does not separate them (0.98 / 0.98 / 0.99
-# against 0.98 / 0.98): its bound catches a blurred result. Copy stays
-# below a third of the exemplar (0.26 / 0.25 / 0.25), where pasting it
+# iterations=1, seeds 1 / 2: 1.35 / 1.42 and 0.80 / 0.91; docs/
+# benchmarks.md). Sharpness does not separate them (1.00 / 0.99 / 1.00
+# against 0.99 / 0.99): its bound catches a blurred result. Copy stays
+# below a third of the exemplar (0.24 / 0.24 / 0.24), where pasting it
 # whole would reach 1.
 PLAIN_LIMITS = [
     ("coherence", "max", 1.25),
@@ -36,7 +36,10 @@ PLAIN_LIMITS = [
     ("sharpness", "min", 0.9),
 ]
 SEAM_MAX = 1.10              # tileable: on every exemplar
-TILE_COHERENCE_SLACK = 1.15  # tileable coherence median / plain median
+# Tileable: the median over the exemplars of each one's tileable
+# coherence over its plain one. (The ratio of the two medians jumped
+# between seeds: the 8th and 9th of 16 values lie far apart.)
+TILE_COHERENCE_SLACK = 1.15
 
 parser = argparse.ArgumentParser(description="Quality of texsynth:synthesize on every exemplar")
 parser.add_argument("--measure", default=os.environ.get("TEXSYNTH_MEASURE"),
@@ -124,8 +127,9 @@ for key, kind, bound in PLAIN_LIMITS:
     check(ok, "median %s %.3f %s %.2f" % (key, value, "<=" if kind == "max" else ">=", bound))
 for name, _, tile, _ in rows:
     check(tile["seam"] <= SEAM_MAX, "%s: tileable seam %.3f <= %.2f" % (name, tile["seam"], SEAM_MAX))
-check(tile_coherence <= TILE_COHERENCE_SLACK * medians["coherence"],
-      "tileable median coherence %.3f within %d%% of plain %.3f"
-      % (tile_coherence, round((TILE_COHERENCE_SLACK - 1) * 100), medians["coherence"]))
+tile_ratio = statistics.median(r[3] for r in rows)
+check(tile_ratio <= TILE_COHERENCE_SLACK,
+      "tileable coherence within %d%% of plain: median ratio %.3f"
+      % (round((TILE_COHERENCE_SLACK - 1) * 100), tile_ratio))
 
 tsops.finish()
