@@ -80,32 +80,77 @@ choose_listed (Votes *v)
       }
 }
 
-/* The listed source with the most vote weight, the first of equals:
- * the copy the covering neighbourhoods agree on. */
+/* Slots of the table that sums each source's votes: a power of two at
+ * least twice the votes a pixel usually has, so probes stay short. */
+#define TS_CONSENSUS_SLOTS 64
+
+/* The listed source with the most vote weight, the first listed of
+ * equals: the copy the covering neighbourhoods agree on. Each source's
+ * weights add up in list order, in a small hash table (more votes than
+ * half its slots fall back to comparing the list with itself). */
 static void
 choose_consensus (Votes *v)
 {
-  float most = -1.0f;
+  int32_t key[TS_CONSENSUS_SLOTS];
+  float sum[TS_CONSENSUS_SLOTS];
+  uint16_t listed[TS_CONSENSUS_SLOTS];
+  float most = -1.0f, first = 0.0f;
+  size_t winner = 0;
 
+  /* Most often the first listed source holds a clear majority (with
+   * margin for the sums' rounding): then it has the most. */
   for (size_t i = 0; i < v->count; i++)
+    if (v->source[i] == v->source[0])
+      first += v->vote_weight[i];
+  if (v->count > 0 && first > 0.5001f * v->weight)
+    most = first;
+  else if (v->count <= TS_CONSENSUS_SLOTS / 2)
     {
-      float weight = 0.0f;
-      size_t j = 0;
-      while (j < i && v->source[j] != v->source[i])
-        j++;
-      if (j < i)
-        continue;   /* counted at its first listing */
-      for (; j < v->count; j++)
-        if (v->source[j] == v->source[i])
-          weight += v->vote_weight[j];
-      if (weight > most)
+      for (size_t s = 0; s < TS_CONSENSUS_SLOTS; s++)
+        key[s] = -1;
+      for (size_t i = 0; i < v->count; i++)
         {
-          most = weight;
-          v->best_source = v->source[i];
-          v->best_distance = distance_to_mean (v, v->value[0][i], v->value[1][i],
-                                               v->value[2][i], v->value[3][i]);
+          uint32_t h = ((uint32_t) v->source[i] * 2654435761u) >> 26;
+          while (key[h] >= 0 && key[h] != v->source[i])
+            h = (h + 1) & (TS_CONSENSUS_SLOTS - 1);
+          if (key[h] < 0)
+            {
+              key[h] = v->source[i];
+              sum[h] = 0.0f;
+              listed[h] = (uint16_t) i;
+            }
+          sum[h] += v->vote_weight[i];
         }
+      for (size_t s = 0; s < TS_CONSENSUS_SLOTS; s++)
+        if (key[s] >= 0 && (sum[s] > most || (sum[s] == most && listed[s] < winner)))
+          {
+            most = sum[s];
+            winner = listed[s];
+          }
     }
+  else
+    for (size_t i = 0; i < v->count; i++)
+      {
+        size_t j = 0;
+        float total = 0.0f;
+        while (j < i && v->source[j] != v->source[i])
+          j++;
+        if (j < i)
+          continue;   /* counted at its first listing */
+        for (; j < v->count; j++)
+          if (v->source[j] == v->source[i])
+            total += v->vote_weight[j];
+        if (total > most)
+          {
+            most = total;
+            winner = i;
+          }
+      }
+  if (most < 0.0f)
+    return;
+  v->best_source = v->source[winner];
+  v->best_distance = distance_to_mean (v, v->value[0][winner], v->value[1][winner],
+                                       v->value[2][winner], v->value[3][winner]);
 }
 
 /* Appends a vote to the list, or notes that it is full. */
