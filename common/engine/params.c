@@ -180,7 +180,7 @@ estimate_bytes (const TsParams *params, const TsImage *exemplar, int threads)
    * the result (16, the ops' GEGL buffer). */
   bytes += out * (16.0 + 4.0 + 1.0 + 2.0 + 16.0);
   if (ts_region_bound_applies (params))
-    bytes += out * 5.0;                                /* coherent regions' flags and queue */
+    bytes += out * 10.0;  /* coherent regions: flags, links, queue, sets */
   if (params->wrap_x || params->wrap_y)
     bytes += out * 4.0;                                /* seam disagreement   */
   if (params->source_map)

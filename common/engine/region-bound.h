@@ -21,7 +21,10 @@ enum
 typedef struct
 {
   uint8_t  *flags;    /* per output pixel, TS_REGION_* bits */
-  uint32_t *queue;    /* one region's pixels in breadth-first order */
+  uint8_t  *links;    /* per output pixel: continues into its right / lower neighbour */
+  uint32_t *queue;    /* regions' sizes, then their pixels in breadth-first order */
+  uint32_t *parent;   /* the regions as disjoint sets */
+  size_t   *large;    /* roots of the regions larger than max_area */
   size_t    width, height;
   size_t    max_area; /* output pixels a coherent region may cover */
 } TsRegionBound;
