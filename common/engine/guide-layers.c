@@ -226,7 +226,7 @@ mend_sources (const TsParams *params, const TsImage *exemplar, const uint8_t *ex
 static TsStatus
 synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t *ex_label,
                   const Box *ex_box, const uint8_t *target_label, uint8_t label, uint32_t area,
-                  const Box *ob, int32_t *start, Part *part, TsError *error)
+                  const Box *ob, int32_t *start, TsExemplarMemo *memo, Part *part, TsError *error)
 {
   size_t out_w = params->output_width;
   Box eb = *ex_box;
@@ -259,7 +259,7 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
       p.source_map = sources;
       status = ts_params_validate (&p, &layer, error);
       if (status == TS_OK)
-        status = ts_synthesize_needed (&p, &layer, needed, &result,
+        status = ts_synthesize_needed (&p, &layer, needed, memo, &result,
                                        part->func ? part_report : NULL, part, error);
     }
   if (status == TS_OK)
@@ -407,16 +407,21 @@ ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsI
       for (size_t a = 0; a < areas[l]; a++)
         total += (double) box_area (&mine[a]);
     }
+  /* A label's areas share its part of the exemplar: it is matched once. */
   for (size_t l = 0; status == TS_OK && l < count; l++)
-    for (size_t a = 0; status == TS_OK && a < areas[l]; a++)
-      {
-        const Box *b = &area[l * TS_LAYER_MAX_AREAS + a];
-        part.start = done / total;
-        part.span = (double) box_area (b) / total;
-        status = synthesize_layer (params, exemplar, ex_label, &ex_box[l], target_label,
-                                   (uint8_t) l, (uint32_t) a, b, start, &part, error);
-        done += (double) box_area (b);
-      }
+    {
+      TsExemplarMemo memo = { 0 };
+      for (size_t a = 0; status == TS_OK && a < areas[l]; a++)
+        {
+          const Box *b = &area[l * TS_LAYER_MAX_AREAS + a];
+          part.start = done / total;
+          part.span = (double) box_area (b) / total;
+          status = synthesize_layer (params, exemplar, ex_label, &ex_box[l], target_label,
+                                     (uint8_t) l, (uint32_t) a, b, start, &memo, &part, error);
+          done += (double) box_area (b);
+        }
+      ts_exemplar_memo_free (&memo);
+    }
   if (status == TS_OK)
     write_layers (params, exemplar, start, output);
   free (ex_label);

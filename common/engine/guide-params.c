@@ -181,10 +181,13 @@ ts_guides_estimate_bytes (const TsParams *params, const TsImage *exemplar)
   if (ts_guide_layers_apply (params, exemplar))
     /* Layers: their sources, both label maps, one layer's result,
      * sources and needed pixels, one layer's exemplar, the lattice guide
-     * a layer's plain synthesis may build and that synthesis's active
-     * region (active-region.c: two masks and two temporaries); it needs
-     * no more than a plain one of the output's size otherwise. */
-    return out * 8.0 + (out + ex) + out * (16.0 + 8.0 + 1.0) + ex * 16.0 + lattice + out * 4.0;
+     * a layer's plain synthesis may build, that synthesis's active
+     * region (active-region.c: two masks and two temporaries) and the
+     * label's candidate sets of every level (quality + 3 per level
+     * coarser, a quarter of the pixels); it needs no more than a plain
+     * one of the output's size otherwise. */
+    return out * 8.0 + (out + ex) + out * (16.0 + 8.0 + 1.0) + ex * 16.0 + lattice + out * 4.0
+           + ex * 4.0 * (4.0 / 3.0 * (double) params->quality + 2.0);
   if (!params->guides)
     return lattice;
   /* Value pyramids of both guides (labels take less), the exemplar's

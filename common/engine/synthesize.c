@@ -35,6 +35,7 @@ typedef struct
 {
   const TsParams *params;
   const uint8_t  *needed;        /* output pixels the caller needs, or NULL */
+  TsExemplarMemo *memo;          /* candidate sets kept between calls, or NULL */
   TsProgress      progress;
   TsCancel        cancel;        /* lets the steps ask `progress` midway    */
   const char     *stage;         /* what a midway report says             */
@@ -231,7 +232,8 @@ typedef struct
 {
   TsImage         working;
   TsPyramid       pyramid;
-  TsCandidateSet  candidates, coarser_candidates;
+  TsCandidateSet  candidates, coarser_candidates;   /* without a memo */
+  const TsCandidateSet *coarser_set;                 /* the coarser level's */
   TsLevelState    state;
   int32_t        *opaque;
   int32_t        *coarser_source;
@@ -301,10 +303,16 @@ synthesize_level (Run *run, Work *w, size_t level)
   if (params->guides)
     options.rerank = options.rerank_coarsest;
   run->stage = "matching exemplar";
-  status = ts_mrpm_level (&w->pyramid, level, level + 1 < w->pyramid.levels ? &w->coarser_candidates : NULL,
-                          plan.k_level, &options, &run->cancel, &w->candidates);
-  if (status != TS_OK)
-    return status;
+  /* A memo's set of this level, if it has one, saves the matching. */
+  TsCandidateSet *set = run->memo ? &run->memo->sets[level] : &w->candidates;
+  if (!run->memo || !set->index || set->k != plan.k_level)
+    {
+      ts_candidate_set_free (set);
+      status = ts_mrpm_level (&w->pyramid, level, level + 1 < w->pyramid.levels ? w->coarser_set : NULL,
+                              plan.k_level, &options, &run->cancel, set);
+      if (status != TS_OK)
+        return status;
+    }
   ts_candidate_set_free (&w->coarser_candidates);
   if (!ts_progress_report (&run->progress, (double) ts_level_side (params->output_width, level) *
                            (double) ts_level_side (params->output_height, level),
@@ -314,7 +322,7 @@ synthesize_level (Run *run, Work *w, size_t level)
 
   memset (state, 0, sizeof *state);
   state->exemplar = ex;
-  state->candidates = &w->candidates;
+  state->candidates = set;
   state->width = ts_level_side (params->output_width, level);
   state->height = ts_level_side (params->output_height, level);
   state->wrap_x = params->wrap_x;
@@ -395,6 +403,7 @@ synthesize_level (Run *run, Work *w, size_t level)
   state->source = NULL;
   w->coarser_candidates = w->candidates;
   memset (&w->candidates, 0, sizeof w->candidates);
+  w->coarser_set = run->memo ? set : &w->coarser_candidates;
   if (level > 0)
     work_free_level (w);
   return TS_OK;
@@ -422,16 +431,27 @@ write_result (const TsParams *params, const Work *w, TsImage *output)
     }
 }
 
+void
+ts_exemplar_memo_free (TsExemplarMemo *memo)
+{
+  for (size_t l = 0; l < memo->levels; l++)
+    ts_candidate_set_free (&memo->sets[l]);
+  free (memo->sets);
+  memo->sets = NULL;
+  memo->levels = 0;
+}
+
 TsStatus
 ts_synthesize_optimized (const TsParams *params, const TsImage *exemplar, TsImage *output,
                          TsProgressFunc progress, void *user_data, TsError *error)
 {
-  return ts_synthesize_needed (params, exemplar, NULL, output, progress, user_data, error);
+  return ts_synthesize_needed (params, exemplar, NULL, NULL, output, progress, user_data, error);
 }
 
 TsStatus
 ts_synthesize_needed (const TsParams *params, const TsImage *exemplar, const uint8_t *needed,
-                      TsImage *output, TsProgressFunc progress, void *user_data, TsError *error)
+                      TsExemplarMemo *memo, TsImage *output, TsProgressFunc progress,
+                      void *user_data, TsError *error)
 {
   Run run = { .params = params, .needed = needed,
              .progress = { .func = progress, .user_data = user_data },
@@ -445,6 +465,16 @@ ts_synthesize_needed (const TsParams *params, const TsImage *exemplar, const uin
   status = ts_image_to_working (exemplar, &w.working);
   if (status == TS_OK)
     status = ts_pyramid_build (&w.working, ts_schedule_levels (exemplar), &w.pyramid);
+  if (status == TS_OK && memo && !memo->levels)
+    {
+      memo->sets = calloc (w.pyramid.levels, sizeof *memo->sets);
+      memo->levels = memo->sets ? w.pyramid.levels : 0;
+      if (!memo->sets)
+        status = TS_ERROR_OUT_OF_MEMORY;
+    }
+  /* A memo of another exemplar's pyramid is left alone. */
+  if (status == TS_OK && memo && memo->levels == w.pyramid.levels)
+    run.memo = memo;
   if (status == TS_OK && params->guides)
     status = ts_guide_pyramid_build (params, exemplar, &w.pyramid, &w.guides);
   else if (status == TS_OK && !params->initial_source)

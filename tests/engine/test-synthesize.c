@@ -1,7 +1,9 @@
 /* Whole-engine properties: exact exemplar pixels, determinism across
- * thread counts, seeds, transparency, cancel, tiny inputs, the E-step. */
+ * thread counts, seeds, transparency, cancel, tiny inputs, the E-step,
+ * candidate sets shared through a memo. */
 #include "test-util.h"
 #include "engine/level.h"
+#include "engine/synthesize.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -114,6 +116,45 @@ test_transparent_never_used (void)
   free (out.pixels);
   free (ex.pixels);
   free (sources);
+}
+
+/* Syntheses that share an exemplar memo (texture by numbers' areas of
+ * one label) give what each gives alone: the memo only saves matching
+ * the exemplar again, at any output size and seed. */
+static void
+test_exemplar_memo (void)
+{
+  TsImage ex;
+  TsExemplarMemo memo = { 0 };
+  const size_t sides[3][2] = { { 96, 80 }, { 150, 64 }, { 96, 80 } };
+
+  test_noise_image (&ex, 70, 60, 9);
+  for (size_t i = 0; i < 3; i++)
+    {
+      size_t w = sides[i][0], h = sides[i][1];
+      TsImage alone = { w, h, malloc (w * h * 16) }, shared = { w, h, malloc (w * h * 16) };
+      TsParams p;
+      TsError error;
+      ts_params_init (&p);
+      p.output_width = w;
+      p.output_height = h;
+      p.seed = (uint32_t) (i + 3);
+      CHECK (alone.pixels && shared.pixels, "allocation");
+      if (!alone.pixels || !shared.pixels)
+        break;
+      CHECK (ts_synthesize_needed (&p, &ex, NULL, NULL, &alone, NULL, NULL, &error) == TS_OK,
+             "alone: %s", error.message);
+      CHECK (ts_synthesize_needed (&p, &ex, NULL, &memo, &shared, NULL, NULL, &error) == TS_OK,
+             "with the memo: %s", error.message);
+      CHECK (memo.levels > 0 && memo.sets[0].index != NULL, "the memo holds the sets");
+      CHECK (memcmp (alone.pixels, shared.pixels, w * h * 16) == 0,
+             "synthesis %zu (%zux%zu) the same with the memo", i, w, h);
+      free (alone.pixels);
+      free (shared.pixels);
+    }
+  ts_exemplar_memo_free (&memo);
+  CHECK (memo.levels == 0 && memo.sets == NULL, "memo freed");
+  free (ex.pixels);
 }
 
 static void
@@ -303,6 +344,7 @@ main (void)
   test_exact_and_deterministic ();
   test_transparent_never_used ();
   test_cancel_and_errors ();
+  test_exemplar_memo ();
   test_tiny_sizes ();
   return test_finish ("test-synthesize");
 }
