@@ -57,6 +57,22 @@ hash_unit (unsigned seed, long x, long y)
 }
 
 void
+test_synthesize (const char *name, const TsImage *exemplar, TsImage *out, uint32_t seed,
+                 bool tileable)
+{
+  TsParams params;
+  TsError error = { TS_OK, "" };
+
+  ts_params_init (&params);
+  params.output_width = out->width;
+  params.output_height = out->height;
+  params.seed = seed;
+  params.wrap_x = params.wrap_y = tileable;
+  CHECK (ts_synthesize (&params, exemplar, out, NULL, NULL, &error) == TS_OK, "%s seed %u: %s",
+         name, seed, error.message);
+}
+
+void
 test_noise_image (TsImage *image, size_t width, size_t height, unsigned seed)
 {
   image->width = width;

@@ -43,6 +43,12 @@ int test_finish (const char *name);
  * aborts the test with a message if it cannot. Free with free(). */
 void test_load_exemplar (const char *name, TsImage *image);
 
+/* A plain synthesis of `exemplar` filling `out` (its size as set there)
+ * with the default parameters, the given seed, tileable or not; CHECKs
+ * that it succeeds, naming the exemplar `name`. */
+void test_synthesize (const char *name, const TsImage *exemplar, TsImage *out, uint32_t seed,
+                      bool tileable);
+
 /* Deterministic smooth-noise Lab image, opaque. */
 void test_noise_image (TsImage *image, size_t width, size_t height, unsigned seed);
 

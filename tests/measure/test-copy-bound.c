@@ -25,15 +25,8 @@ check_copy (const char *name, size_t side, uint32_t seeds, bool tileable)
   CHECK (out.pixels != NULL, "out of memory");
   for (uint32_t seed = 1; out.pixels && seed <= seeds; seed++)
     {
-      TsParams params;
-      TsError error = { TS_OK, "" };
       double copy = 2.0;
-      ts_params_init (&params);
-      params.output_width = params.output_height = side;
-      params.seed = seed;
-      params.wrap_x = params.wrap_y = tileable;
-      CHECK (ts_synthesize (&params, &exemplar, &out, NULL, NULL, &error) == TS_OK,
-             "%s seed %u: %s", name, seed, error.message);
+      test_synthesize (name, &exemplar, &out, seed, tileable);
       CHECK (ts_measure_copy (&exemplar, &out, tileable, tileable, &copy) == TS_MEASURE_OK,
              "%s seed %u measured", name, seed);
       printf ("%s %zux%zu%s seed %u: copy %.3f\n", name, side, side, tileable ? " tileable" : "",

@@ -45,14 +45,8 @@ check_detail (const char *name, uint32_t seeds)
   CHECK (out.pixels != NULL, "out of memory");
   for (uint32_t seed = 1; out.pixels && seed <= seeds; seed++)
     {
-      TsParams params;
-      TsError error = { TS_OK, "" };
       double sharpness = 0.0;
-      ts_params_init (&params);
-      params.output_width = params.output_height = SIDE;
-      params.seed = seed;
-      CHECK (ts_synthesize (&params, &exemplar, &out, NULL, NULL, &error) == TS_OK,
-             "%s seed %u: %s", name, seed, error.message);
+      test_synthesize (name, &exemplar, &out, seed, false);
       CHECK (ts_measure_sharpness (&exemplar, &out, &sharpness) == TS_MEASURE_OK,
              "%s seed %u measured", name, seed);
       printf ("%s seed %u: sharpness %.3f\n", name, seed, sharpness);
