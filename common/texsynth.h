@@ -214,7 +214,8 @@ TsStatus ts_feature_matching_image (const TsImage      *exemplar,
 
 /* output pixel i = exemplar pixel source_map[2i], source_map[2i + 1]
  * (coordinates as TsParams.source_map gives them, all inside the
- * exemplar); `output` is allocated by the caller. */
+ * exemplar), as the engine reads it: non-finite values 0, alpha clamped
+ * to [0, 1]; `output` is allocated by the caller. */
 void ts_copy_by_source_map (const TsImage *exemplar, const int32_t *source_map, TsImage *output);
 
 /* --- Making an existing image tileable (common/tileable/) --------------- */

@@ -5,6 +5,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "texsynth.h"
 #include "error.h"
+#include "image.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -180,5 +181,6 @@ ts_copy_by_source_map (const TsImage *exemplar, const int32_t *source_map, TsIma
       memcpy (output->pixels + i * TS_CHANNELS,
               exemplar->pixels + (y * exemplar->width + x) * TS_CHANNELS,
               TS_CHANNELS * sizeof (float));
+      ts_pixel_readable (output->pixels + i * TS_CHANNELS);
     }
 }

@@ -52,15 +52,13 @@ ts_image_to_working (const TsImage *in, TsImage *out)
     return status;
   n = ts_image_pixel_count (in);
   memcpy (out->pixels, in->pixels, n * TS_CHANNELS * sizeof (float));
-  for (size_t i = 0; i < n * TS_CHANNELS; i++)
-    if (!isfinite (out->pixels[i]))
-      out->pixels[i] = 0.0f;   /* NaN/Inf from float files would poison every distance */
-  /* Alpha out of [0, 1] (float files allow it) would be copied into the
-   * result as it is and weigh more than colour in every distance. */
+  /* NaN/Inf from float files would poison every distance; alpha out of
+   * [0, 1] (float files allow it) would be copied into the result as it
+   * is and weigh more than colour in every distance. */
   for (size_t i = 0; i < n; i++)
     {
-      float *alpha = out->pixels + i * TS_CHANNELS + 3;
-      *alpha = (*alpha < 0.0f ? 0.0f : *alpha > 1.0f ? 1.0f : *alpha) * TS_ALPHA_SCALE;
+      ts_pixel_readable (out->pixels + i * TS_CHANNELS);
+      out->pixels[i * TS_CHANNELS + 3] *= TS_ALPHA_SCALE;
     }
   return TS_OK;
 }

@@ -5,6 +5,8 @@
 
 #include "texsynth.h"
 
+#include <math.h>
+
 /* Weight of alpha against Lab in every distance: the engine's working
  * images store alpha * TS_ALPHA_SCALE in channel 3, so a fully transparent
  * vs. opaque difference costs as much as black vs. white. */
@@ -21,7 +23,19 @@ ts_image_pixel (const TsImage *image, size_t x, size_t y)
   return image->pixels + (y * image->width + x) * TS_CHANNELS;
 }
 
-/* Working copy: channel 3 scaled by TS_ALPHA_SCALE. */
+/* One pixel as the engine reads an exemplar: non-finite values (from
+ * float files) 0, alpha clamped to [0, 1]. */
+static inline void
+ts_pixel_readable (float *pixel)
+{
+  for (int c = 0; c < TS_CHANNELS; c++)
+    if (!isfinite (pixel[c]))
+      pixel[c] = 0.0f;
+  pixel[3] = pixel[3] < 0.0f ? 0.0f : pixel[3] > 1.0f ? 1.0f : pixel[3];
+}
+
+/* Working copy: each pixel as ts_pixel_readable makes it, channel 3
+ * scaled by TS_ALPHA_SCALE. */
 TsStatus ts_image_to_working (const TsImage *in, TsImage *out);
 /* Inverse of ts_image_to_working, in place into an allocated `out`. */
 void     ts_image_from_working (const TsImage *in, TsImage *out);

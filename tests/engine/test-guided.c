@@ -234,6 +234,24 @@ test_tiny_regions (void)
     for (size_t x = 0; x < OUT; x++)
       target[y * OUT + x] = x % 12 == 5 && y % 12 == 5 ? 1.0f : 0.0f;
   expect_every_label (&ex, &guides, &out, sources, "169 one-pixel specks");
+  /* An exemplar of non-finite values and alpha out of range (a float
+   * file's): the layers' result holds them as the engine reads them,
+   * finite, alpha in [0, 1], as a plain synthesis's does. */
+  for (size_t i = 0; i < EX_W * EX_H; i += 3)
+    {
+      ex.pixels[i * TS_CHANNELS] = NAN;
+      ex.pixels[i * TS_CHANNELS + 1] = INFINITY;
+      ex.pixels[i * TS_CHANNELS + 3] = i % 2 ? 7.0f : 1.0f;
+    }
+  if (run_guided (&ex, &guides, 5, &out, sources, false) == TS_OK)
+    {
+      bool readable = true;
+      for (size_t i = 0; i < OUT * OUT * TS_CHANNELS; i++)
+        readable &= isfinite (out.pixels[i]) && (i % TS_CHANNELS != 3 || out.pixels[i] <= 1.0f);
+      CHECK (readable, "non-finite exemplar values: the result is finite, alpha at most 1");
+    }
+  else
+    CHECK (false, "non-finite exemplar values: guided synthesis ran");
   free (ex.pixels);
   free (out.pixels);
   free (ex_labels);
