@@ -79,6 +79,24 @@ label_maps (const TsParams *params, const TsImage *exemplar, uint8_t **ex_label,
   for (ptrdiff_t i = 0; i < (ptrdiff_t) ex_n; i++)
     (*ex_label)[i] = ts_guide_nearest_label (table, *count, g->channels,
                                              g->exemplar_guide + (size_t) i * g->channels);
+  /* A distinct value that no exemplar pixel is nearest to (a NaN) has no
+   * texture to grow: only the labels the exemplar has stay. */
+  uint8_t kept[TS_MAX_GUIDE_LABELS] = { 0 }, index[TS_MAX_GUIDE_LABELS];
+  size_t present = 0;
+  for (size_t i = 0; i < ex_n; i++)
+    kept[(*ex_label)[i]] = 1;
+  for (size_t l = 0; l < *count; l++)
+    if (kept[l])
+      {
+        index[l] = (uint8_t) present;
+        memmove (table + present * g->channels, table + l * g->channels,
+                 g->channels * sizeof (float));
+        present++;
+      }
+  if (present < *count)
+    for (size_t i = 0; i < ex_n; i++)
+      (*ex_label)[i] = index[(*ex_label)[i]];
+  *count = present;
 #pragma omp parallel for schedule(static)
   for (ptrdiff_t i = 0; i < (ptrdiff_t) out_n; i++)
     (*target_label)[i] = ts_guide_nearest_label (table, *count, g->channels,

@@ -211,7 +211,7 @@ test_tiny_regions (void)
   float *ex_labels = malloc (EX_W * EX_H * sizeof (float));
   float *target = calloc (OUT * OUT, sizeof (float));
   int32_t *sources = malloc (OUT * OUT * 2 * sizeof (int32_t));
-  TsImage ex, out = { OUT, OUT, malloc (OUT * OUT * TS_CHANNELS * sizeof (float)) };
+  TsImage ex, ex2, out = { OUT, OUT, malloc (OUT * OUT * TS_CHANNELS * sizeof (float)) };
   TsGuides guides;
 
   two_texture_exemplar (&ex, ex_labels);
@@ -252,6 +252,30 @@ test_tiny_regions (void)
     }
   else
     CHECK (false, "non-finite exemplar values: guided synthesis ran");
+  /* A distinct exemplar value that no exemplar pixel is nearest to: 3e-24
+   * lies within float underflow of label 0, which comes first, but a
+   * target value of 1e-21 is nearer to it. It has no texture; its target
+   * pixels take a label the exemplar has (it made a layer of a box
+   * turned inside out, read beyond the exemplar). */
+  two_texture_exemplar (&ex2, ex_labels);
+  CHECK (ex_labels[0] == 0.0f, "label 0 comes first");
+  for (size_t i = 1; i < EX_W * EX_H; i += 7)
+    if (ex_labels[i] == 0.0f)
+      ex_labels[i] = 3e-24f;
+  for (size_t i = 0; i < OUT * OUT; i += 5)
+    target[i] = 1e-21f;
+  guides.compare = TS_GUIDE_LABELS;
+  if (run_guided (&ex2, &guides, 5, &out, sources, false) == TS_OK)
+    {
+      bool inside = true;
+      for (size_t i = 0; i < OUT * OUT; i++)
+        inside &= sources[2 * i] >= 0 && (size_t) sources[2 * i] < EX_W && sources[2 * i + 1] >= 0
+                  && (size_t) sources[2 * i + 1] < EX_H;
+      CHECK (inside, "a label only the target has: every source inside the exemplar");
+    }
+  else
+    CHECK (false, "a label only the target has: guided synthesis ran");
+  free (ex2.pixels);
   free (ex.pixels);
   free (out.pixels);
   free (ex_labels);
