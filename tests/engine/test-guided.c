@@ -275,6 +275,17 @@ test_tiny_regions (void)
     }
   else
     CHECK (false, "a label only the target has: guided synthesis ran");
+  guides.blend_edges = true;
+  if (run_guided (&ex2, &guides, 5, &out, sources, false) == TS_OK)
+    {
+      bool inside = true;
+      for (size_t i = 0; i < OUT * OUT; i++)
+        inside &= sources[2 * i] >= 0 && (size_t) sources[2 * i] < EX_W && sources[2 * i + 1] >= 0
+                  && (size_t) sources[2 * i + 1] < EX_H;
+      CHECK (inside, "a label only the target has, blended edges: every source inside");
+    }
+  else
+    CHECK (false, "a label only the target has, blended edges: guided synthesis ran");
   free (ex2.pixels);
   free (ex.pixels);
   free (out.pixels);
