@@ -203,6 +203,23 @@ expect_every_label (const TsImage *ex, const TsGuides *guides, TsImage *out, int
   CHECK (everywhere == 1.0, "%s: every pixel's source has its label (%.4f)", what, everywhere);
 }
 
+static void
+expect_sources_inside (const TsImage *ex, const TsGuides *guides, TsImage *out, int32_t *sources,
+                       const char *what)
+{
+  bool inside = true;
+
+  if (run_guided (ex, guides, 5, out, sources, false) != TS_OK)
+    {
+      CHECK (false, "%s: guided synthesis ran", what);
+      return;
+    }
+  for (size_t i = 0; i < OUT * OUT; i++)
+    inside &= sources[2 * i] >= 0 && (size_t) sources[2 * i] < EX_W && sources[2 * i + 1] >= 0
+              && (size_t) sources[2 * i + 1] < EX_H;
+  CHECK (inside, "%s: every source inside the exemplar", what);
+}
+
 /* Regions of one pixel and one pixel wide grow in layers too, each
  * pixel from its own label, in the target and in the exemplar. */
 static void
@@ -265,27 +282,10 @@ test_tiny_regions (void)
   for (size_t i = 0; i < OUT * OUT; i += 5)
     target[i] = 1e-21f;
   guides.compare = TS_GUIDE_LABELS;
-  if (run_guided (&ex2, &guides, 5, &out, sources, false) == TS_OK)
-    {
-      bool inside = true;
-      for (size_t i = 0; i < OUT * OUT; i++)
-        inside &= sources[2 * i] >= 0 && (size_t) sources[2 * i] < EX_W && sources[2 * i + 1] >= 0
-                  && (size_t) sources[2 * i + 1] < EX_H;
-      CHECK (inside, "a label only the target has: every source inside the exemplar");
-    }
-  else
-    CHECK (false, "a label only the target has: guided synthesis ran");
+  expect_sources_inside (&ex2, &guides, &out, sources, "a label only the target has");
   guides.blend_edges = true;
-  if (run_guided (&ex2, &guides, 5, &out, sources, false) == TS_OK)
-    {
-      bool inside = true;
-      for (size_t i = 0; i < OUT * OUT; i++)
-        inside &= sources[2 * i] >= 0 && (size_t) sources[2 * i] < EX_W && sources[2 * i + 1] >= 0
-                  && (size_t) sources[2 * i + 1] < EX_H;
-      CHECK (inside, "a label only the target has, blended edges: every source inside");
-    }
-  else
-    CHECK (false, "a label only the target has, blended edges: guided synthesis ran");
+  expect_sources_inside (&ex2, &guides, &out, sources,
+                         "a label only the target has, blended edges");
   free (ex2.pixels);
   free (ex.pixels);
   free (out.pixels);
