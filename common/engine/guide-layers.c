@@ -79,8 +79,9 @@ label_maps (const TsParams *params, const TsImage *exemplar, uint8_t **ex_label,
   for (ptrdiff_t i = 0; i < (ptrdiff_t) ex_n; i++)
     (*ex_label)[i] = ts_guide_nearest_label (table, *count, g->channels,
                                              g->exemplar_guide + (size_t) i * g->channels);
-  /* A distinct value that no exemplar pixel is nearest to (a NaN) has no
-   * texture to grow: only the labels the exemplar has stay. */
+  /* A distinct value that no exemplar pixel is nearest to (a NaN, or one
+   * within float underflow of an earlier label) has no texture to grow:
+   * only the labels the exemplar has stay. */
   uint8_t kept[TS_MAX_GUIDE_LABELS] = { 0 }, index[TS_MAX_GUIDE_LABELS];
   size_t present = 0;
   for (size_t i = 0; i < ex_n; i++)
@@ -237,25 +238,23 @@ mend_sources (const TsParams *params, const TsImage *exemplar, const uint8_t *ex
       }
 }
 
-/* A plain synthesis of `label`'s texture (its pixels inside `ex_box`,
- * their bounding box in the exemplar) over the box `ob` of the output
- * (the label's `area`-th); its sources go to start[] at the pixels the
- * target gives that label, in the whole exemplar's coordinates. */
+/* A plain synthesis of `label`'s texture (`layer`: layer_exemplar's, of
+ * the exemplar's box `eb`) over the box `ob` of the output (the label's
+ * `area`-th); its sources go to start[] at the pixels the target gives
+ * that label, in the whole exemplar's coordinates. */
 static TsStatus
 synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t *ex_label,
-                  const Box *ex_box, const uint8_t *target_label, uint8_t label, uint32_t area,
-                  const Box *ob, int32_t *start, TsExemplarMemo *memo, Part *part, TsError *error)
+                  const TsImage *layer, const Box *eb, const uint8_t *target_label,
+                  uint8_t label, uint32_t area, const Box *ob, int32_t *start,
+                  TsExemplarMemo *memo, Part *part, TsError *error)
 {
   size_t out_w = params->output_width;
-  Box eb = *ex_box;
-  TsImage layer = { 0 }, result = { ob->x1 - ob->x0, ob->y1 - ob->y0, NULL };
+  TsImage result = { ob->x1 - ob->x0, ob->y1 - ob->y0, NULL };
   int32_t *sources = NULL;
   uint8_t *needed = NULL;
   TsParams p = *params;
-  TsStatus status;
+  TsStatus status = TS_OK;
 
-  grow_box (&eb, exemplar->width, exemplar->height, TS_LAYER_MIN_SIDE, TS_LAYER_MIN_SIDE);
-  status = layer_exemplar (exemplar, ex_label, label, &eb, &layer);
   result.pixels = malloc (result.width * result.height * TS_CHANNELS * sizeof (float));
   sources = malloc (result.width * result.height * 2 * sizeof (int32_t));
   needed = malloc (result.width * result.height);
@@ -275,9 +274,9 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
       p.seed = (uint32_t) ts_random (params->seed, 0, area, label, TS_LAYER_SEED_STREAM);
       p.guides = NULL;
       p.source_map = sources;
-      status = ts_params_validate (&p, &layer, error);
+      status = ts_params_validate (&p, layer, error);
       if (status == TS_OK)
-        status = ts_synthesize_needed (&p, &layer, needed, memo, &result,
+        status = ts_synthesize_needed (&p, layer, needed, memo, &result,
                                        part->func ? part_report : NULL, part, error);
     }
   if (status == TS_OK)
@@ -286,12 +285,11 @@ synthesize_layer (const TsParams *params, const TsImage *exemplar, const uint8_t
         if (target_label[y * out_w + x] == label)
           {
             const int32_t *s = sources + 2 * ((y - ob->y0) * result.width + x - ob->x0);
-            start[2 * (y * out_w + x)] = s[0] + (int32_t) eb.x0;
-            start[2 * (y * out_w + x) + 1] = s[1] + (int32_t) eb.y0;
+            start[2 * (y * out_w + x)] = s[0] + (int32_t) eb->x0;
+            start[2 * (y * out_w + x) + 1] = s[1] + (int32_t) eb->y0;
           }
   if (status == TS_OK)
     mend_sources (params, exemplar, ex_label, target_label, label, ob, start);
-  free (layer.pixels);
   free (result.pixels);
   free (sources);
   free (needed);
@@ -425,20 +423,30 @@ ts_guide_layers_synthesize (const TsParams *params, const TsImage *exemplar, TsI
       for (size_t a = 0; a < areas[l]; a++)
         total += (double) box_area (&mine[a]);
     }
-  /* A label's areas share its part of the exemplar: it is matched once. */
+  /* A label's areas share its part of the exemplar: it is cut out and
+   * matched once. */
   for (size_t l = 0; status == TS_OK && l < count; l++)
     {
       TsExemplarMemo memo = { 0 };
+      TsImage layer = { 0 };
+      Box eb = ex_box[l];
+      if (areas[l] == 0)
+        continue;
+      grow_box (&eb, exemplar->width, exemplar->height, TS_LAYER_MIN_SIDE, TS_LAYER_MIN_SIDE);
+      status = layer_exemplar (exemplar, ex_label, (uint8_t) l, &eb, &layer);
+      if (status != TS_OK)
+        ts_fail (error, status, "%s", ts_status_string (status));
       for (size_t a = 0; status == TS_OK && a < areas[l]; a++)
         {
           const Box *b = &area[l * TS_LAYER_MAX_AREAS + a];
           part.start = done / total;
           part.span = (double) box_area (b) / total;
-          status = synthesize_layer (params, exemplar, ex_label, &ex_box[l], target_label,
+          status = synthesize_layer (params, exemplar, ex_label, &layer, &eb, target_label,
                                      (uint8_t) l, (uint32_t) a, b, start, &memo, &part, error);
           done += (double) box_area (b);
         }
       ts_exemplar_memo_free (&memo);
+      free (layer.pixels);
     }
   if (status == TS_OK)
     write_layers (params, exemplar, start, output);
