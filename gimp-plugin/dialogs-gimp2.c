@@ -454,7 +454,10 @@ ts_guided_dialog2 (const gchar *procedure, TsGuidedArgs *args, gint32 target, gi
   form_double (&form, guide ? "guide-weight" : "style-weight", &args->guide_weight, 0.0,
                TS_PLUGIN_MAX_GUIDE_WEIGHT, 10.0);
   if (guide)
-    form_toggle (&form, "tileable", &args->tileable);
+    {
+      form_toggle (&form, "blend-edges", &args->blend_edges);
+      form_toggle (&form, "tileable", &args->tileable);
+    }
   form_int (&form, "quality", &args->quality, TS_PLUGIN_MIN_QUALITY, TS_PLUGIN_MAX_QUALITY,
             TS_PLUGIN_MAX_QUALITY);
   form_seed (&form, &seed, &randomize);

@@ -82,10 +82,11 @@ start_preview (gpointer data)
       ts_guided_args_init (&settings.guided);
       g_object_get (config, "guide-weight", &settings.guided.guide_weight,
                     "quality", &settings.guided.quality, "seed", &settings.guided.seed, NULL);
-      /* Texture by numbers has an exemplar, its guide and tileable; style
-       * transfer only a style. */
+      /* Texture by numbers has an exemplar, its guide, blended edges and
+       * tileable; style transfer only a style. */
       if (g_object_class_find_property (G_OBJECT_GET_CLASS (config), "tileable"))
-        g_object_get (config, "tileable", &settings.guided.tileable, NULL);
+        g_object_get (config, "blend-edges", &settings.guided.blend_edges,
+                      "tileable", &settings.guided.tileable, NULL);
       settings.exemplar = read_layer (source->config, "exemplar");
       if (!settings.exemplar)
         settings.exemplar = read_layer (source->config, "style");

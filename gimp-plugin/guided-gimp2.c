@@ -32,6 +32,7 @@ ts_install_guided2 (void)
     { GIMP_PDB_DRAWABLE, "exemplar",       "Exemplar: the texture (or textures) to paint with" },
     { GIMP_PDB_DRAWABLE, "exemplar-guide", "The exemplar's guide, of the exemplar's size and aligned with it" },
     { GIMP_PDB_FLOAT,    "guide-weight",   "How much following the guides counts against a coherent texture (0-100, default 1; 0 ignores the guides)" },
+    { GIMP_PDB_INT32,    "blend-edges",    "Blend the textures across label edges in one synthesis of the whole image (TRUE), or grow each label's area from its own texture and cut it at the label's edges (FALSE)" },
     { GIMP_PDB_INT32,    "tileable",       "Make the result tile seamlessly (TRUE or FALSE)" },
     { GIMP_PDB_INT32,    "quality",        "Candidates compared per pixel (1-10, default 2)" },
     { GIMP_PDB_INT32,    "seed",           "Random seed (0 or more)" },
@@ -83,7 +84,7 @@ read_arguments (const gchar *name, GimpRunMode mode, const GimpParam *params, gi
                 gint32 target, LastValues *last, Outcome *outcome)
 {
   gboolean by_numbers = g_str_equal (name, TS_PROC_BY_NUMBERS);
-  gint expected = by_numbers ? 9 : 7, next = 3;
+  gint expected = by_numbers ? 10 : 7, next = 3;
   TsPreviewInput preview = { .kind = TS_PREVIEW_GUIDED, .ratio = 1.0 };
   GeglBuffer *buffer;
   gboolean ok;
@@ -100,7 +101,10 @@ read_arguments (const gchar *name, GimpRunMode mode, const GimpParam *params, gi
         last->guide = params[next++].data.d_drawable;
       last->args.guide_weight = params[next++].data.d_float;
       if (by_numbers)
-        last->args.tileable = params[next++].data.d_int32 != 0;
+        {
+          last->args.blend_edges = params[next++].data.d_int32 != 0;
+          last->args.tileable = params[next++].data.d_int32 != 0;
+        }
       last->args.quality = params[next++].data.d_int32;
       last->args.seed = params[next].data.d_int32;
       return TRUE;

@@ -84,7 +84,8 @@ run_guided (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
       shown = preview.pixels ? &preview : NULL;
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
       ok = by_numbers ? ts_dialog3 (procedure, config, _("Texture by Numbers"), shown,
-                                    "exemplar", "exemplar-guide", "guide-weight", "tileable",
+                                    "exemplar", "exemplar-guide", "guide-weight", "blend-edges",
+                                    "tileable",
                                     "quality", "seed", NULL)
                       : ts_dialog3 (procedure, config, _("Style Transfer by Synthesis"), shown,
                                     "style", "guide-weight", "quality", "seed", NULL);
@@ -97,7 +98,8 @@ run_guided (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
                 "guide-weight", &args.guide_weight, "quality", &args.quality,
                 "seed", &args.seed, NULL);
   if (by_numbers)
-    g_object_get (config, "exemplar-guide", &guide_layer, "tileable", &args.tileable, NULL);
+    g_object_get (config, "exemplar-guide", &guide_layer, "blend-edges", &args.blend_edges,
+                  "tileable", &args.tileable, NULL);
   message = ts_guided_args_check (&args);
   if (!message)
     message = check_layer (exemplar_layer, by_numbers ? _("The exemplar must be a layer.")
@@ -210,6 +212,10 @@ ts_guided_procedure3 (GimpPlugIn *plug_in, const gchar *name)
                                       ts_arg_tooltip (by_numbers ? "guide-weight" : "style-weight"),
                                       0.0, TS_PLUGIN_MAX_GUIDE_WEIGHT,
                                       TS_PLUGIN_DEFAULT_GUIDE_WEIGHT, G_PARAM_READWRITE);
+  if (by_numbers)
+    gimp_procedure_add_boolean_argument (procedure, "blend-edges", ts_arg_label ("blend-edges"),
+                                         ts_arg_tooltip ("blend-edges"), FALSE,
+                                         G_PARAM_READWRITE);
   if (by_numbers)
     gimp_procedure_add_boolean_argument (procedure, "tileable", ts_arg_label ("tileable"),
                                          ts_arg_tooltip ("tileable"), FALSE, G_PARAM_READWRITE);

@@ -20,6 +20,7 @@
 typedef struct
 {
   gdouble  guide_weight;
+  gboolean blend_edges; /* texture by numbers only */
   gboolean tileable;    /* texture by numbers only */
   gint     quality;
   gint     seed;

@@ -11,6 +11,7 @@ void
 ts_guided_args_init (TsGuidedArgs *args)
 {
   args->guide_weight = TS_PLUGIN_DEFAULT_GUIDE_WEIGHT;
+  args->blend_edges = FALSE;
   args->tileable = FALSE;
   args->quality = TS_PLUGIN_DEFAULT_QUALITY;
   args->seed = 0;
@@ -56,6 +57,7 @@ ts_plugin_guided (const TsExemplar   *exemplar,
   GeglNode *graph = gegl_node_new ();
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_GUIDED,
                                       "guide-weight", args->guide_weight,
+                                      "blend-edges", args->blend_edges,
                                       "tileable", args->tileable, "quality", args->quality,
                                       "seed", args->seed, NULL);
   gboolean ok;

@@ -208,6 +208,13 @@ static const struct
     N_("How closely the result follows the target guide against how coherent its "
        "texture is: at 1 a pixel whose guide disagrees costs as much as two unrelated "
        "pixels of the texture; 0 ignores the guides") },
+  { "blend-edges", N_("Blend label edges"),
+    /* The op's own description, so that its translations serve. */
+    N_("Labels only. Off: each label's area is grown from its own texture alone and "
+       "cut at the label's edges, so areas of any width keep their texture. On: one "
+       "synthesis over the whole image, whose textures blend across label edges as they "
+       "do in the exemplar, but areas narrower than about 30 pixels lose some of their "
+       "texture") },
   { "style", N_("Style"),
     N_("The layer whose texture repaints this one, e.g. a painting or a material") },
   { "style-weight", N_("Keep the layer's shading"),

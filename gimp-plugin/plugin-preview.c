@@ -289,6 +289,7 @@ start_guided (GeglBuffer *exemplar, GeglBuffer *exemplar_guide, GeglBuffer *targ
   GeglNode *graph = gegl_node_new ();
   GeglNode *op = gegl_node_new_child (graph, "operation", TS_OP_GUIDED,
                                       "guide-weight", args->guide_weight,
+                                      "blend-edges", args->blend_edges,
                                       "tileable", args->tileable, "quality", args->quality,
                                       "seed", args->seed, NULL);
 

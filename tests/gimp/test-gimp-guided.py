@@ -1,10 +1,10 @@
 # The guided procedures in headless GIMP (2.10 or 3):
 # plug-in-texsynth-texture-by-numbers paints a two-texture exemplar (brick
 # on the left, 3dweave on the right, its guide black and white) along a
-# target guide of a white disc on black, as a new layer above the target;
-# away from the disc's edge, the blocks inside it must look like the
-# weave (their nearest window of the two textures is the weave's) and
-# those outside like the brick. plug-in-texsynth-style-transfer
+# target guide of a white disc on black, as a new layer above the target,
+# with label edges cut and blended; away from the disc's edge, the blocks
+# inside it must look like the weave (their nearest window of the two
+# textures is the weave's) and those outside like the brick. plug-in-texsynth-style-transfer
 # repaints a dark-to-light gradient with brick's texture in place: its
 # blurred lightness must follow the gradient's. Bad input: an exemplar's
 # guide of another size is a calling error that adds no layer.
@@ -71,7 +71,8 @@ inside = lambda x, y: math.hypot(x + 0.5 - CENTRE[0], y + 0.5 - CENTRE[1]) < RAD
 write_png(target, TARGET_W, TARGET_H, lambda x, y: (1.0,) * 3 if inside(x, y) else (0.0,) * 3)
 write_png(gradient, TARGET_W, TARGET_H, lambda x, y: (0.15 + 0.7 * x / (TARGET_W - 1),) * 3)
 
-by_numbers_out = os.path.join(work, "by-numbers.png")
+BLENDS = ("FALSE", "TRUE")
+by_numbers_out = {blend: os.path.join(work, "by-numbers-%s.png" % blend) for blend in BLENDS}
 style_out = os.path.join(work, "style.png")
 
 
@@ -85,10 +86,10 @@ def layer_count(image):
     return sf.n_layers(image)
 
 
-def by_numbers_call(guide_layer, seed=1):
+def by_numbers_call(guide_layer, blend="FALSE", seed=1):
     drawables = "(vector tgt)" if V3 else "tgt"
-    return ("(plug-in-texsynth-texture-by-numbers RUN-NONINTERACTIVE tgt-img %s ex %s 1.0 FALSE 2 %d)"
-            % (drawables, guide_layer, seed))
+    return ("(plug-in-texsynth-texture-by-numbers RUN-NONINTERACTIVE tgt-img %s ex %s 1.0 %s FALSE "
+            "2 %d)" % (drawables, guide_layer, blend, seed))
 
 
 def save_layer(image, layer, path):
@@ -96,12 +97,14 @@ def save_layer(image, layer, path):
     return sf.save(image, layer, path)
 
 
-by_numbers = ("(let* (%s %s %s (before %s) (new (car %s))) %s %s)" % (
+by_numbers = ["(let* (%s %s %s (before %s) (new (car %s))) %s %s)" % (
     load_as("tgt", target), load_as("ex", exemplar), load_as("gd", guide),
-    layer_count("tgt-img"), by_numbers_call("gd"), save_layer("tgt-img", "new", by_numbers_out),
-    sf.message("bynumbers", "(- %s before)" % layer_count("tgt-img"),
+    layer_count("tgt-img"), by_numbers_call("gd", blend),
+    save_layer("tgt-img", "new", by_numbers_out[blend]),
+    sf.message("bynumbers-" + blend, "(- %s before)" % layer_count("tgt-img"),
                "(car (%s new))" % ("gimp-drawable-get-width" if V3 else "gimp-drawable-width"),
-               "(car (%s new))" % ("gimp-drawable-get-height" if V3 else "gimp-drawable-height"))))
+               "(car (%s new))" % ("gimp-drawable-get-height" if V3 else "gimp-drawable-height")))
+              for blend in BLENDS]
 
 style = ("(let* (%s %s (before %s)) (plug-in-texsynth-style-transfer RUN-NONINTERACTIVE "
          "tgt-img %s ex 1.0 2 1) %s %s)" % (
@@ -117,7 +120,7 @@ bad_size = ('(begin (gimp-message "TSCALL badsize") (let* (%s %s %s (before %s))
                 layer_count("tgt-img"), by_numbers_call("gd"),
                 sf.message("badsize", "(- %s before)" % layer_count("tgt-img"))))
 
-code, out, _ = gimp.run([by_numbers, style, bad_size])
+code, out, _ = gimp.run(by_numbers + [style, bad_size])
 lines = out.splitlines()
 tsops.check(code == 0, "GIMP exits normally (exit code %d)" % code)
 tsops.check(not any("crashed" in line for line in lines), "the plug-in never crashes")
@@ -166,12 +169,15 @@ def nearest(features, windows):
     return min(math.dist(features, w) for w in windows)
 
 
-r = fields("bynumbers")
-if tsops.check(r is not None, "texture by numbers returns a new layer"):
-    tsops.check(r == [1, TARGET_W, TARGET_H], "one new layer of the target's size %dx%d (got %s)"
-                % (TARGET_W, TARGET_H, r))
-    brick_windows, weave_windows = texture_windows(brick), texture_windows(weave)
-    w, _, px = tsops.load(by_numbers_out)
+brick_windows, weave_windows = texture_windows(brick), texture_windows(weave)
+for blend in BLENDS:
+    what = "texture by numbers, %s label edges" % ("blended" if blend == "TRUE" else "cut")
+    r = fields("bynumbers-" + blend)
+    if not tsops.check(r is not None, "%s returns a new layer" % what):
+        continue
+    tsops.check(r == [1, TARGET_W, TARGET_H], "%s: one new layer of the target's size %dx%d "
+                "(got %s)" % (what, TARGET_W, TARGET_H, r))
+    w, _, px = tsops.load(by_numbers_out[blend])
     result = lambda x, y: px[(y * w + x) * 4:(y * w + x) * 4 + 3]  # noqa: E731
     right = judged = 0
     for by in range(TARGET_H // BLOCK):
@@ -185,8 +191,12 @@ if tsops.check(r is not None, "texture by numbers returns a new layer"):
             judged += 1
             right += nearer_weave == (distance < 0)
     share = right / judged if judged else 0.0
-    tsops.check(share >= 0.95, "texture by numbers: %.3f of %d blocks away from the disc's edge "
-                "take the texture their label asks for (>= 0.95)" % (share, judged))
+    tsops.check(share >= 0.95, "%s: %.3f of %d blocks away from the disc's edge take the "
+                "texture their label asks for (>= 0.95)" % (what, share, judged))
+
+if all(os.path.exists(by_numbers_out[blend]) for blend in BLENDS):
+    tsops.check(tsops.load(by_numbers_out["FALSE"])[2] != tsops.load(by_numbers_out["TRUE"])[2],
+                "blend-edges reaches the op: blended and cut label edges give different layers")
 
 r = fields("style")
 if tsops.check(r is not None, "style transfer runs"):

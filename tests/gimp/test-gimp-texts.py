@@ -32,7 +32,7 @@ PROCEDURES = {
     "plug-in-texsynth-heal-transparency": ["context", "sample-from", "quality", "seed"],
     "plug-in-texsynth-uncrop": ["percent", "quality", "seed"],
     "plug-in-texsynth-texture-by-numbers": ["exemplar", "exemplar-guide", "guide-weight",
-                                            "tileable", "quality", "seed"],
+                                            "blend-edges", "tileable", "quality", "seed"],
     "plug-in-texsynth-style-transfer": ["style", "guide-weight", "quality", "seed"],
 }
 # GIMP 2.10's database has no ranges: the number arguments that may be 0.
