@@ -27,10 +27,11 @@ ts_guide_spread (const float *values, size_t stride, size_t n, const float *alph
   *sd = count > 0.0 ? sqrt (sum2 / count) : 0.0;
 }
 
-/* One pass along rows (`across`) or columns of channel `c`. */
+/* One pass along rows (`across`) or columns of channel `c`; `wrap`
+ * reads past that pass's borders from the other side. */
 static void
 blur_pass (const float *in, float *out, size_t w, size_t h, size_t c, const double *kernel,
-           int radius, bool across)
+           int radius, bool across, bool wrap)
 {
 #pragma omp parallel for schedule(static)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) h; y++)
@@ -39,18 +40,16 @@ blur_pass (const float *in, float *out, size_t w, size_t h, size_t c, const doub
         double s = 0.0;
         for (int k = -radius; k <= radius; k++)
           {
-            size_t sx = across ? ts_mirror ((ptrdiff_t) x + k, w) : x;
-            size_t sy = across ? (size_t) y : ts_mirror (y + k, h);
+            size_t sx = across ? ts_border_index ((ptrdiff_t) x + k, w, wrap) : x;
+            size_t sy = across ? (size_t) y : ts_border_index (y + k, h, wrap);
             s += kernel[k + radius] * in[(sy * w + sx) * TS_CHANNELS + c];
           }
         out[((size_t) y * w + x) * TS_CHANNELS + c] = (float) s;
       }
 }
 
-/* Channel `c` of `image` blurred in place by a Gaussian of `sigma`
- * pixels (mirrored borders). */
-static TsStatus
-blur_channel (TsImage *image, size_t c, double sigma)
+TsStatus
+ts_style_blur (TsImage *image, size_t c, double sigma, bool wrap_x, bool wrap_y)
 {
   size_t w = image->width, h = image->height;
   int radius = (int) ceil (3.0 * sigma);
@@ -67,8 +66,8 @@ blur_channel (TsImage *image, size_t c, double sigma)
     total += kernel[k + radius] = exp (-0.5 * k * k / (sigma * sigma));
   for (int k = 0; k <= 2 * radius; k++)
     kernel[k] /= total;
-  blur_pass (image->pixels, tmp, w, h, c, kernel, radius, true);
-  blur_pass (tmp, image->pixels, w, h, c, kernel, radius, false);
+  blur_pass (image->pixels, tmp, w, h, c, kernel, radius, true, wrap_x);
+  blur_pass (tmp, image->pixels, w, h, c, kernel, radius, false, wrap_y);
   free (kernel);
   free (tmp);
   return TS_OK;
@@ -136,15 +135,15 @@ ts_style_guides (const TsImage *exemplar, TsImage *ex_guide, TsImage *target_gui
    * local variance. */
   for (size_t i = 0; i < ex_n; i++)
     e[i * TS_CHANNELS + 1] = e[i * TS_CHANNELS];
-  if (blur_channel (ex_guide, 0, TS_STYLE_GUIDE_BLUR) != TS_OK
-      || blur_channel (target_guide, 0, TS_STYLE_GUIDE_BLUR) != TS_OK)
+  if (ts_style_blur (ex_guide, 0, TS_STYLE_GUIDE_BLUR, false, false) != TS_OK
+      || ts_style_blur (target_guide, 0, TS_STYLE_GUIDE_BLUR, false, false) != TS_OK)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t i = 0; i < ex_n; i++)
     {
       float d = e[i * TS_CHANNELS + 1] - e[i * TS_CHANNELS];
       e[i * TS_CHANNELS + 1] = d * d;
     }
-  if (blur_channel (ex_guide, 1, TS_STYLE_GUIDE_BLUR) != TS_OK)
+  if (ts_style_blur (ex_guide, 1, TS_STYLE_GUIDE_BLUR, false, false) != TS_OK)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t i = 0; i < ex_n; i++)
     e[i * TS_CHANNELS + 1] = sqrtf (fmaxf (e[i * TS_CHANNELS + 1], 0.0f));

@@ -6,6 +6,8 @@
 
 #include "texsynth.h"
 
+#include <stdbool.h>
+
 /* Style transfer's guides are lightness blurred by a Gaussian of this
  * many pixels: details below it (a texture's grain) are left to the
  * exemplar. Chosen on bark, granite1, rock and wood1 restyling land1
@@ -38,6 +40,10 @@
  * (n of them; only those whose `alpha` is positive, if given). */
 void     ts_guide_spread (const float *values, size_t stride, size_t n, const float *alpha,
                           double *mean, double *sd);
+
+/* Channel `c` of `image` blurred in place by a Gaussian of `sigma`
+ * pixels: borders mirrored, or wrapped where `wrap_x` / `wrap_y`. */
+TsStatus ts_style_blur (TsImage *image, size_t c, double sigma, bool wrap_x, bool wrap_y);
 
 /* Makes style transfer's guides in place. On entry channel 0 of
  * `ex_guide` is the exemplar's lightness (`exemplar` its pixels, for

@@ -4,6 +4,7 @@
  * SPDX-License-Identifier: LGPL-3.0-or-later */
 #include "guide-layers.h"
 #include "guide-params.h"
+#include "style-tone.h"
 #include "synthesize.h"
 #include "error.h"
 
@@ -22,5 +23,12 @@ ts_synthesize (const TsParams *params, const TsImage *exemplar, TsImage *output,
                     params->output_width, params->output_height);
   if (ts_guide_layers_apply (params, exemplar))
     return ts_guide_layers_synthesize (params, exemplar, output, progress, user_data, error);
-  return ts_synthesize_optimized (params, exemplar, output, progress, user_data, error);
+  status = ts_synthesize_optimized (params, exemplar, output, progress, user_data, error);
+  if (status == TS_OK && params->guides && !params->guides->exemplar_guide)
+    {
+      status = ts_style_tone (params->guides, exemplar, params->wrap_x, params->wrap_y, output);
+      if (status != TS_OK)
+        return ts_fail (error, status, "%s", ts_status_string (status));
+    }
+  return status;
 }
