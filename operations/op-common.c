@@ -194,12 +194,21 @@ ts_op_result_format (GeglOperation *operation)
   const Babl *space = ts_op_source_space (operation, "input");
   const char *model = source ? babl_get_name (babl_format_get_model (source)) : "";
   static const char *const linear_models[] = { "RGB", "RGBA", "RaGaBaA", "Y", "YA", "YaA" };
-  const char *encoding = strchr (model, '~') ? "R~G~B~A float" : "R'G'B'A float";
+  const char *components = strchr (model, '~') ? "R~G~B~A" : "R'G'B'A";
+  const char *type = source ? babl_get_name (babl_format_get_type (source, 0)) : "";
 
   for (size_t i = 0; i < G_N_ELEMENTS (linear_models); i++)
     if (strcmp (model, linear_models[i]) == 0)
-      encoding = "RGBA float";
-  return babl_format_with_space (encoding, space);
+      components = "RGBA";
+  /* The source's own integer depth, else float: the result's pixels are
+   * the source's, so its depth holds them exactly, and GEGL has no
+   * float copy of a large result to convert on one thread. */
+  if (strcmp (type, "u8") != 0 && strcmp (type, "u16") != 0)
+    type = "float";
+  gchar *encoding = g_strdup_printf ("%s %s", components, type);
+  const Babl *format = babl_format_with_space (encoding, space);
+  g_free (encoding);
+  return format;
 }
 
 void

@@ -37,9 +37,9 @@ def child(fmt, out):
     for op, props in (("texsynth:synthesize", dict(width=64, height=64, seed=11, quality=1)),
                       ("texsynth:tileable", dict(seed=5, quality=1))):
         graph, _, node = tsops.op_on_buffer(exemplar, op, **props)
-        # The ops' own format (float RGBA with the exemplar's curve, in its
-        # space): read without any conversion.
-        own = "RGBA float" if fmt == "RGBA float" else "R'G'B'A float"
+        # The ops' own format (RGBA with the exemplar's curve and depth, in
+        # its space): read without any conversion.
+        own = "RGBA float" if fmt == "RGBA float" else "R'G'B'A " + fmt.split()[-1]
         digest.update(tsops.render_bytes(node, own)[2])
     with open(out, "w") as f:
         f.write(digest.hexdigest())
