@@ -85,8 +85,7 @@ run_guided (GimpProcedure *procedure, GimpRunMode mode, GimpImage *image G_GNUC_
       g_object_set (config, "seed", ts_plugin_random_seed (), NULL);
       ok = by_numbers ? ts_dialog3 (procedure, config, _("Texture by Numbers"), shown,
                                     "exemplar", "exemplar-guide", "guide-weight", "blend-edges",
-                                    "tileable",
-                                    "quality", "seed", NULL)
+                                    "tileable", "quality", "seed", NULL)
                       : ts_dialog3 (procedure, config, _("Style Transfer by Synthesis"), shown,
                                     "style", "guide-weight", "quality", "seed", NULL);
       g_clear_object (&preview.pixels);

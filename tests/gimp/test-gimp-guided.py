@@ -4,8 +4,9 @@
 # target guide of a white disc on black, as a new layer above the target,
 # with label edges cut and blended; away from the disc's edge, the blocks
 # inside it must look like the weave (their nearest window of the two
-# textures is the weave's) and those outside like the brick. plug-in-texsynth-style-transfer
-# repaints a dark-to-light gradient with brick's texture in place: its
+# textures is the weave's) and those outside like the brick, and the two
+# layers must differ. plug-in-texsynth-style-transfer repaints a
+# dark-to-light gradient with brick's texture in place: its
 # blurred lightness must follow the gradient's. Bad input: an exemplar's
 # guide of another size is a calling error that adds no layer.
 # SPDX-License-Identifier: GPL-3.0-or-later
