@@ -27,11 +27,12 @@ ts_guide_spread (const float *values, size_t stride, size_t n, const float *alph
   *sd = count > 0.0 ? sqrt (sum2 / count) : 0.0;
 }
 
-/* One pass along rows (`across`) or columns of channel `c`; `wrap`
+/* One pass along rows (`across`) or columns: `in` and `out` hold one
+ * value per pixel, `in_stride` and `out_stride` floats apart; `wrap`
  * reads past that pass's borders from the other side. */
 static void
-blur_pass (const float *in, float *out, size_t w, size_t h, size_t c, const double *kernel,
-           int radius, bool across, bool wrap)
+blur_pass (const float *in, size_t in_stride, float *out, size_t out_stride, size_t w, size_t h,
+           const double *kernel, int radius, bool across, bool wrap)
 {
 #pragma omp parallel for schedule(static)
   for (ptrdiff_t y = 0; y < (ptrdiff_t) h; y++)
@@ -42,19 +43,20 @@ blur_pass (const float *in, float *out, size_t w, size_t h, size_t c, const doub
           {
             size_t sx = across ? ts_border_index ((ptrdiff_t) x + k, w, wrap) : x;
             size_t sy = across ? (size_t) y : ts_border_index (y + k, h, wrap);
-            s += kernel[k + radius] * in[(sy * w + sx) * TS_CHANNELS + c];
+            s += kernel[k + radius] * in[(sy * w + sx) * in_stride];
           }
-        out[((size_t) y * w + x) * TS_CHANNELS + c] = (float) s;
+        out[((size_t) y * w + x) * out_stride] = (float) s;
       }
 }
 
 TsStatus
-ts_style_blur (TsImage *image, size_t c, double sigma, bool wrap_x, bool wrap_y)
+ts_blur_values (float *values, size_t stride, size_t w, size_t h, double sigma, bool wrap_x,
+                bool wrap_y)
 {
-  size_t w = image->width, h = image->height;
   int radius = (int) ceil (3.0 * sigma);
   double *kernel = malloc ((size_t) (2 * radius + 1) * sizeof (double)), total = 0.0;
-  float *tmp = malloc (w * h * TS_CHANNELS * sizeof (float));
+  size_t n = w * h;
+  float *tmp = malloc ((n > 0 ? n : 1) * sizeof (float));
 
   if (!kernel || !tmp)
     {
@@ -66,11 +68,20 @@ ts_style_blur (TsImage *image, size_t c, double sigma, bool wrap_x, bool wrap_y)
     total += kernel[k + radius] = exp (-0.5 * k * k / (sigma * sigma));
   for (int k = 0; k <= 2 * radius; k++)
     kernel[k] /= total;
-  blur_pass (image->pixels, tmp, w, h, c, kernel, radius, true, wrap_x);
-  blur_pass (tmp, image->pixels, w, h, c, kernel, radius, false, wrap_y);
+  blur_pass (values, stride, tmp, 1, w, h, kernel, radius, true, wrap_x);
+  blur_pass (tmp, 1, values, stride, w, h, kernel, radius, false, wrap_y);
   free (kernel);
   free (tmp);
   return TS_OK;
+}
+
+/* Channel `c` of `image` blurred in place by a Gaussian of `sigma`
+ * pixels, borders mirrored. */
+static TsStatus
+blur_channel (TsImage *image, size_t c, double sigma)
+{
+  return ts_blur_values (image->pixels + c, TS_CHANNELS, image->width, image->height, sigma,
+                         false, false);
 }
 
 /* The target asks, at each tone, for the exemplar's mean contrast at
@@ -135,15 +146,15 @@ ts_style_guides (const TsImage *exemplar, TsImage *ex_guide, TsImage *target_gui
    * local variance. */
   for (size_t i = 0; i < ex_n; i++)
     e[i * TS_CHANNELS + 1] = e[i * TS_CHANNELS];
-  if (ts_style_blur (ex_guide, 0, TS_STYLE_GUIDE_BLUR, false, false) != TS_OK
-      || ts_style_blur (target_guide, 0, TS_STYLE_GUIDE_BLUR, false, false) != TS_OK)
+  if (blur_channel (ex_guide, 0, TS_STYLE_GUIDE_BLUR) != TS_OK
+      || blur_channel (target_guide, 0, TS_STYLE_GUIDE_BLUR) != TS_OK)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t i = 0; i < ex_n; i++)
     {
       float d = e[i * TS_CHANNELS + 1] - e[i * TS_CHANNELS];
       e[i * TS_CHANNELS + 1] = d * d;
     }
-  if (ts_style_blur (ex_guide, 1, TS_STYLE_GUIDE_BLUR, false, false) != TS_OK)
+  if (blur_channel (ex_guide, 1, TS_STYLE_GUIDE_BLUR) != TS_OK)
     return TS_ERROR_OUT_OF_MEMORY;
   for (size_t i = 0; i < ex_n; i++)
     e[i * TS_CHANNELS + 1] = sqrtf (fmaxf (e[i * TS_CHANNELS + 1], 0.0f));

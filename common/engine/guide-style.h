@@ -41,9 +41,11 @@
 void     ts_guide_spread (const float *values, size_t stride, size_t n, const float *alpha,
                           double *mean, double *sd);
 
-/* Channel `c` of `image` blurred in place by a Gaussian of `sigma`
- * pixels: borders mirrored, or wrapped where `wrap_x` / `wrap_y`. */
-TsStatus ts_style_blur (TsImage *image, size_t c, double sigma, bool wrap_x, bool wrap_y);
+/* The w x h values of `values` (one per pixel, `stride` floats apart)
+ * blurred in place by a Gaussian of `sigma` pixels: borders mirrored, or
+ * wrapped where `wrap_x` / `wrap_y`. Takes w x h floats meanwhile. */
+TsStatus ts_blur_values (float *values, size_t stride, size_t w, size_t h, double sigma,
+                         bool wrap_x, bool wrap_y);
 
 /* Makes style transfer's guides in place. On entry channel 0 of
  * `ex_guide` is the exemplar's lightness (`exemplar` its pixels, for

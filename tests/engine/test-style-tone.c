@@ -55,7 +55,8 @@ tone (const TsImage *image, bool wrap, float *out)
     return false;
   for (size_t i = 0; i < n; i++)
     t.pixels[i * TS_CHANNELS] = image->pixels[i * TS_CHANNELS] / 100.0f;
-  bool ok = ts_style_blur (&t, 0, TS_STYLE_GUIDE_BLUR, wrap, wrap) == TS_OK;
+  bool ok = ts_blur_values (t.pixels, TS_CHANNELS, t.width, t.height, TS_STYLE_GUIDE_BLUR, wrap,
+                            wrap) == TS_OK;
   for (size_t i = 0; ok && i < n; i++)
     out[i] = t.pixels[i * TS_CHANNELS];
   free (t.pixels);
