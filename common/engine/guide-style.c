@@ -27,6 +27,20 @@ ts_guide_spread (const float *values, size_t stride, size_t n, const float *alph
   *sd = count > 0.0 ? sqrt (sum2 / count) : 0.0;
 }
 
+double
+ts_tone_to_exemplar (const float *ex_tone, size_t ex_stride, size_t ex_n, const float *alpha,
+                     float *tone, size_t stride, size_t n)
+{
+  double ex_mean, ex_sd, mean, sd;
+
+  ts_guide_spread (ex_tone, ex_stride, ex_n, alpha, &ex_mean, &ex_sd);
+  ts_guide_spread (tone, stride, n, NULL, &mean, &sd);
+  double gain = sd > 1e-6 ? ex_sd / sd : 1.0;
+  for (size_t i = 0; i < n; i++)
+    tone[i * stride] = (float) ((tone[i * stride] - mean) * gain + ex_mean);
+  return ex_sd;
+}
+
 /* One pass along rows (`across`) or columns: `in` and `out` hold one
  * value per pixel, `in_stride` and `out_stride` floats apart; `wrap`
  * reads past that pass's borders from the other side. */
@@ -138,7 +152,7 @@ ts_style_guides (const TsImage *exemplar, TsImage *ex_guide, TsImage *target_gui
 {
   size_t ex_n = ts_image_pixel_count (ex_guide), out_n = ts_image_pixel_count (target_guide);
   const float *alpha = exemplar->pixels + 3;
-  double ex_mean, ex_sd, t_mean, t_sd, c_mean, c_sd;
+  double c_mean, c_sd;
   float *e = ex_guide->pixels, *t = target_guide->pixels;
 
   /* Channel 1 keeps the lightness while channel 0 is blurred into the
@@ -161,11 +175,7 @@ ts_style_guides (const TsImage *exemplar, TsImage *ex_guide, TsImage *target_gui
 
   /* The target's tone moved to the exemplar's mean and spread, so each
    * part of it finds texture of its tone. */
-  ts_guide_spread (e, TS_CHANNELS, ex_n, alpha, &ex_mean, &ex_sd);
-  ts_guide_spread (t, TS_CHANNELS, out_n, NULL, &t_mean, &t_sd);
-  double gain = t_sd > 1e-6 ? ex_sd / t_sd : 1.0;
-  for (size_t i = 0; i < out_n; i++)
-    t[i * TS_CHANNELS] = (float) ((t[i * TS_CHANNELS] - t_mean) * gain + ex_mean);
+  double ex_sd = ts_tone_to_exemplar (e, TS_CHANNELS, ex_n, alpha, t, TS_CHANNELS, out_n);
 
   /* The contrast counts in the tone's units, scaled to the tone's
    * spread: a contrast off by its usual spread costs as much as a tone

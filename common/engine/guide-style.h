@@ -41,6 +41,12 @@
 void     ts_guide_spread (const float *values, size_t stride, size_t n, const float *alpha,
                           double *mean, double *sd);
 
+/* Moves the n values of `tone` (`stride` floats apart) to the mean and
+ * spread of the exemplar's ex_n values `ex_tone` (`ex_stride` apart;
+ * only those whose `alpha` is positive); returns that spread. */
+double   ts_tone_to_exemplar (const float *ex_tone, size_t ex_stride, size_t ex_n,
+                              const float *alpha, float *tone, size_t stride, size_t n);
+
 /* The w x h values of `values` (one per pixel, `stride` floats apart)
  * blurred in place by a Gaussian of `sigma` pixels: borders mirrored, or
  * wrapped where `wrap_x` / `wrap_y`. Takes w x h floats meanwhile. */

@@ -31,8 +31,11 @@ tone_of (const float *values, size_t stride, float scale, size_t width, size_t h
   return tone;
 }
 
-double
-ts_style_tone_strength (double guide_weight)
+/* How far the tone moves for a guide weight: weight / (1 + weight), the
+ * guide's share against the texture's coherence (0 leaves the result as
+ * synthesised). */
+static double
+tone_strength (double guide_weight)
 {
   return guide_weight > 0.0 && isfinite (guide_weight) ? guide_weight / (1.0 + guide_weight) : 0.0;
 }
@@ -43,9 +46,8 @@ ts_style_tone (const TsGuides *guides, const TsImage *exemplar, bool wrap_x, boo
 {
   size_t w = output->width, h = output->height, n = w * h;
   size_t ex_n = exemplar->width * exemplar->height;
-  double strength = ts_style_tone_strength (guides->weight);
+  double strength = tone_strength (guides->weight);
   float *ex_tone = NULL, *target_tone = NULL, *result_tone = NULL;
-  double ex_mean, ex_sd, t_mean, t_sd;
 
   if (strength <= 0.0)
     return TS_OK;
@@ -63,14 +65,11 @@ ts_style_tone (const TsGuides *guides, const TsImage *exemplar, bool wrap_x, boo
     {
       /* The picture's tone moved to the exemplar's mean and spread, as
        * the style guides move it. */
-      ts_guide_spread (ex_tone, 1, ex_n, exemplar->pixels + 3, &ex_mean, &ex_sd);
-      ts_guide_spread (target_tone, 1, n, NULL, &t_mean, &t_sd);
-      double gain = t_sd > 1e-6 ? ex_sd / t_sd : 1.0;
+      ts_tone_to_exemplar (ex_tone, 1, ex_n, exemplar->pixels + 3, target_tone, 1, n);
       for (size_t i = 0; i < n; i++)
         {
           float *p = output->pixels + i * TS_CHANNELS;
-          double want = (target_tone[i] - t_mean) * gain + ex_mean;
-          double shift = strength * (want - result_tone[i]) * 100.0;
+          double shift = strength * ((double) target_tone[i] - result_tone[i]) * 100.0;
           if (p[3] > 0.0f && isfinite (shift))
             p[0] = (float) fmin (fmax (p[0] + shift, 0.0), 100.0);
         }

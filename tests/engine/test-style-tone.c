@@ -47,20 +47,12 @@ grain_image (TsImage *image, size_t side, double grain, uint32_t seed)
 static bool
 tone (const TsImage *image, bool wrap, float *out)
 {
-  TsImage t = { image->width, image->height, NULL };
   size_t n = image->width * image->height;
 
-  t.pixels = calloc (n * TS_CHANNELS, sizeof (float));
-  if (!t.pixels)
-    return false;
   for (size_t i = 0; i < n; i++)
-    t.pixels[i * TS_CHANNELS] = image->pixels[i * TS_CHANNELS] / 100.0f;
-  bool ok = ts_blur_values (t.pixels, TS_CHANNELS, t.width, t.height, TS_STYLE_GUIDE_BLUR, wrap,
-                            wrap) == TS_OK;
-  for (size_t i = 0; ok && i < n; i++)
-    out[i] = t.pixels[i * TS_CHANNELS];
-  free (t.pixels);
-  return ok;
+    out[i] = image->pixels[i * TS_CHANNELS] / 100.0f;
+  return ts_blur_values (out, 1, image->width, image->height, TS_STYLE_GUIDE_BLUR, wrap,
+                         wrap) == TS_OK;
 }
 
 static void
