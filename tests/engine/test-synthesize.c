@@ -132,7 +132,8 @@ test_exemplar_memo (void)
   for (size_t i = 0; i < 3; i++)
     {
       size_t w = sides[i][0], h = sides[i][1];
-      TsImage alone = { w, h, malloc (w * h * 16) }, shared = { w, h, malloc (w * h * 16) };
+      size_t bytes = w * h * TS_CHANNELS * sizeof (float);
+      TsImage alone = { w, h, malloc (bytes) }, shared = { w, h, malloc (bytes) };
       TsParams p;
       TsError error;
       ts_params_init (&p);
@@ -147,7 +148,7 @@ test_exemplar_memo (void)
       CHECK (ts_synthesize_needed (&p, &ex, NULL, &memo, &shared, NULL, NULL, &error) == TS_OK,
              "with the memo: %s", error.message);
       CHECK (memo.levels > 0 && memo.sets[0].index != NULL, "the memo holds the sets");
-      CHECK (memcmp (alone.pixels, shared.pixels, w * h * 16) == 0,
+      CHECK (memcmp (alone.pixels, shared.pixels, bytes) == 0,
              "synthesis %zu (%zux%zu) the same with the memo", i, w, h);
       free (alone.pixels);
       free (shared.pixels);
