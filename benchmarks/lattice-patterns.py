@@ -14,14 +14,17 @@
 # header: header size, version, width, height, bytes per pixel, then the
 # raw pixels) and written as PNG, the central crop of at most 128x128 is
 # the exemplar, and texsynth:synthesize grows it to N x N through the
-# gegl tool. Prints a markdown table.
+# gegl tool. Prints a markdown table. The images go to a temporary
+# folder, removed at the end, unless --out names one to keep them in.
 import argparse
 import json
 import os
 import statistics
 import struct
+import shutil
 import subprocess
 import sys
+import tempfile
 import zlib
 
 from gegl_runs import crop_centre, quiet_runs, synthesize_seeds
@@ -70,15 +73,24 @@ def main():
     ap.add_argument("-b", "--build", default="build")
     ap.add_argument("--size", type=int, default=256)
     ap.add_argument("--seeds", default="1,2,3")
-    ap.add_argument("--out", default="lattice-patterns")
+    ap.add_argument("--out", help="keep the exemplars and results in this folder")
     ap.add_argument("names", nargs="*")
     a = ap.parse_args()
     names = a.names or NEAR_REGULAR + IRREGULAR
     build = os.path.abspath(a.build)
     measure = os.path.join(build, "tools", "texsynth-measure")
+    keep = a.out is not None
+    a.out = a.out if keep else tempfile.mkdtemp(prefix="lattice-patterns.")
     os.makedirs(a.out, exist_ok=True)
     quiet = quiet_runs(build)
+    try:
+        table(a, names, measure, quiet)
+    finally:
+        if not keep:
+            shutil.rmtree(a.out, ignore_errors=True)
 
+
+def table(a, names, measure, quiet):
     print("| pattern | size | strength | lattice, per seed | bds | copy | sharpness |")
     print("|---|---|---|---|---|---|---|")
     for name in names:
