@@ -69,13 +69,21 @@ ts_case_strip (const TsImage *exemplar, size_t l, TsImage *strip)
   return true;
 }
 
-_Static_assert (TS_CASE_SEEDS == 3, "ts_case_median takes the middle of three");
-
 double
-ts_case_median (const double v[TS_CASE_SEEDS])
+ts_case_median (const double *v, size_t n)
 {
-  double lo = fmin (v[0], v[1]), hi = fmax (v[0], v[1]);
-  return fmax (lo, fmin (hi, v[2]));
+  double sorted[TS_CASE_MAX_SEEDS];
+
+  n = n < TS_CASE_MAX_SEEDS ? n : TS_CASE_MAX_SEEDS;
+  memcpy (sorted, v, n * sizeof (double));
+  for (size_t i = 1; i < n; i++)
+    for (size_t j = i; j > 0 && sorted[j - 1] > sorted[j]; j--)
+      {
+        double t = sorted[j];
+        sorted[j] = sorted[j - 1];
+        sorted[j - 1] = t;
+      }
+  return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
 }
 
 static TsStatus
@@ -93,17 +101,20 @@ synthesize (const TsImage *exemplar, const TsGuides *guides, uint32_t seed, TsIm
 }
 
 TsStatus
-ts_case_plain_coherence (const TsImage *exemplar, size_t l, double *median, TsError *error)
+ts_case_plain_coherence (const TsImage *exemplar, size_t l, size_t seeds, double *median,
+                         TsError *error)
 {
   TsImage strip = { 0 }, out = { TS_CASE_OUT, TS_CASE_OUT, NULL };
-  double coherence[TS_CASE_SEEDS], seam;
+  double coherence[TS_CASE_MAX_SEEDS], seam;
   TsStatus status = TS_ERROR_OUT_OF_MEMORY;
+
+  seeds = seeds < 1 ? 1 : seeds > TS_CASE_MAX_SEEDS ? TS_CASE_MAX_SEEDS : seeds;
 
   out.pixels = malloc (TS_CASE_OUT * TS_CASE_OUT * TS_CHANNELS * sizeof (float));
   if (out.pixels && ts_case_strip (exemplar, l, &strip))
     {
       status = TS_OK;
-      for (uint32_t s = 0; s < TS_CASE_SEEDS && status == TS_OK; s++)
+      for (uint32_t s = 0; s < seeds && status == TS_OK; s++)
         {
           status = synthesize (&strip, NULL, TS_CASE_FIRST_SEED + s, &out, error);
           if (status == TS_OK)
@@ -111,7 +122,7 @@ ts_case_plain_coherence (const TsImage *exemplar, size_t l, double *median, TsEr
         }
     }
   if (status == TS_OK)
-    *median = ts_case_median (coherence);
+    *median = ts_case_median (coherence, seeds);
   free (strip.pixels);
   free (out.pixels);
   return status;
@@ -119,7 +130,8 @@ ts_case_plain_coherence (const TsImage *exemplar, size_t l, double *median, TsEr
 
 TsStatus
 ts_case_guided (const TsImage *exemplar, const uint8_t *labels, TsCaseLayout layout,
-                bool blend_edges, TsCaseFigures *figures, TsImage *first, TsError *error)
+                bool blend_edges, size_t seeds, TsCaseFigures *figures, TsImage *first,
+                TsError *error)
 {
   size_t n = TS_CASE_OUT * TS_CASE_OUT;
   uint8_t *target = malloc (n);
@@ -144,7 +156,8 @@ ts_case_guided (const TsImage *exemplar, const uint8_t *labels, TsCaseLayout lay
       guides.target_guide = t_guide;
       guides.blend_edges = blend_edges;
     }
-  for (uint32_t s = 0; s < TS_CASE_SEEDS && status == TS_OK; s++)
+  seeds = seeds < 1 ? 1 : seeds > TS_CASE_MAX_SEEDS ? TS_CASE_MAX_SEEDS : seeds;
+  for (uint32_t s = 0; s < seeds && status == TS_OK; s++)
     {
       TsLabelMeasures m;
       status = synthesize (exemplar, &guides, TS_CASE_FIRST_SEED + s, &out, error);

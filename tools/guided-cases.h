@@ -15,10 +15,13 @@
 #define TS_CASE_EX_W (3 * TS_CASE_STRIP)
 #define TS_CASE_EX_H 96
 #define TS_CASE_OUT 160
-/* Figures are medians over this many seeds from TS_CASE_FIRST_SEED: one
- * seed's coherence of a mostly flat texture (the cracked strip) swings
- * by a factor of 3. */
+/* Figures are medians over a number of seeds from TS_CASE_FIRST_SEED
+ * (TS_CASE_SEEDS by default, at most TS_CASE_MAX_SEEDS): one seed's
+ * coherence of a mostly flat texture (the cracked strip) swings by a
+ * factor of 3, and a thin region's figure is a mean over a few hundred
+ * pixels of one result. */
 #define TS_CASE_SEEDS 3
+#define TS_CASE_MAX_SEEDS 16
 #define TS_CASE_FIRST_SEED 4
 
 typedef enum { TS_CASE_DISCS, TS_CASE_STRIPES, TS_CASE_LINES, TS_CASE_LAYOUTS } TsCaseLayout;
@@ -34,25 +37,27 @@ uint8_t ts_case_target_label (TsCaseLayout layout, size_t x, size_t y);
 bool    ts_case_exemplar (const TsImage texture[3], TsImage *exemplar, uint8_t *labels);
 /* Strip l of the exemplar as an image of its own (allocated here). */
 bool    ts_case_strip (const TsImage *exemplar, size_t l, TsImage *strip);
-double  ts_case_median (const double v[TS_CASE_SEEDS]);
+/* The median of v[0..n-1], n >= 1 (the mean of the middle two if n is
+ * even). */
+double  ts_case_median (const double *v, size_t n);
 
-/* Median over the seeds of the coherence of plain syntheses of strip l
- * alone, TS_CASE_OUT square; fills `error` on failure. */
-TsStatus ts_case_plain_coherence (const TsImage *exemplar, size_t l, double *median,
+/* Median over `seeds` seeds of the coherence of plain syntheses of
+ * strip l alone, TS_CASE_OUT square; fills `error` on failure. */
+TsStatus ts_case_plain_coherence (const TsImage *exemplar, size_t l, size_t seeds, double *median,
                                   TsError *error);
 
 /* Each seed's label fidelity, edge offset and region coherences
  * (guided-metrics.h) of guided syntheses of `layout`. */
 typedef struct
 {
-  double fidelity[TS_CASE_SEEDS], offset[TS_CASE_SEEDS], region[3][TS_CASE_SEEDS];
+  double fidelity[TS_CASE_MAX_SEEDS], offset[TS_CASE_MAX_SEEDS], region[3][TS_CASE_MAX_SEEDS];
 } TsCaseFigures;
 
 /* Texture by numbers of `layout` from the exemplar and its labels, in
- * layers or with blended edges, over the seeds; the first seed's result
+ * layers or with blended edges, over `seeds` seeds; the first seed's result
  * is left in `first` (TS_CASE_OUT square, the caller's) if not NULL. */
 TsStatus ts_case_guided (const TsImage *exemplar, const uint8_t *labels, TsCaseLayout layout,
-                         bool blend_edges, TsCaseFigures *figures, TsImage *first,
+                         bool blend_edges, size_t seeds, TsCaseFigures *figures, TsImage *first,
                          TsError *error);
 
 #endif

@@ -70,7 +70,7 @@ check_guided (const TsImage *ex, const uint8_t *ex_labels, TsCaseLayout layout,
       const char *how = blend ? "blended" : "layers";
       TsCaseFigures f;
       TsError error = { TS_OK, "" };
-      TsStatus status = ts_case_guided (ex, ex_labels, layout, blend, &f, NULL, &error);
+      TsStatus status = ts_case_guided (ex, ex_labels, layout, blend, TS_CASE_SEEDS, &f, NULL, &error);
       if (status != TS_OK)
         {
           CHECK (false, "%s %s: synthesis: %s", name, how,
@@ -78,9 +78,10 @@ check_guided (const TsImage *ex, const uint8_t *ex_labels, TsCaseLayout layout,
           continue;
         }
       printf ("%-8s %-7s fidelity %.3f edge offset %.2f region coherence", name, how,
-              ts_case_median (f.fidelity), ts_case_median (f.offset));
+              ts_case_median (f.fidelity, TS_CASE_SEEDS),
+              ts_case_median (f.offset, TS_CASE_SEEDS));
       for (size_t l = 0; l < 3; l++)
-        printf (" %.3f (plain %.3f)", ts_case_median (f.region[l]), plain[l]);
+        printf (" %.3f (plain %.3f)", ts_case_median (f.region[l], TS_CASE_SEEDS), plain[l]);
       putchar ('\n');
       for (uint32_t s = 0; s < TS_CASE_SEEDS; s++)
         {
@@ -93,9 +94,9 @@ check_guided (const TsImage *ex, const uint8_t *ex_labels, TsCaseLayout layout,
        * stripe or a 10 px line and its coherence falls short: those
        * figures are printed only. */
       for (size_t l = 0; l < 3 && (!blend || layout == TS_CASE_DISCS); l++)
-        CHECK (!(ts_case_median (f.region[l]) > 1.2 * plain[l]),
+        CHECK (!(ts_case_median (f.region[l], TS_CASE_SEEDS) > 1.2 * plain[l]),
                "%s %s: region %zu coherence %.3f <= 1.2 x plain %.3f", name, how, l,
-               ts_case_median (f.region[l]), plain[l]);
+               ts_case_median (f.region[l], TS_CASE_SEEDS), plain[l]);
     }
 }
 
@@ -145,7 +146,7 @@ main (void)
   for (size_t l = 0; l < 3 && !test_small (); l++)
     {
       TsError error = { TS_OK, "" };
-      CHECK (ts_case_plain_coherence (&ex, l, &plain[l], &error) == TS_OK, "plain synthesis: %s",
+      CHECK (ts_case_plain_coherence (&ex, l, TS_CASE_SEEDS, &plain[l], &error) == TS_OK, "plain synthesis: %s",
              error.message);
     }
   for (TsCaseLayout layout = TS_CASE_DISCS; layout < TS_CASE_LAYOUTS; layout++)
