@@ -8,18 +8,23 @@
 # half: canyons2 restyled by cracked, stone33, java and burlap.
 # SPDX-License-Identifier: LGPL-3.0-or-later
 #
-# Usage: benchmarks/style-transfer.sh [-b BUILD_DIR] [-e EXEMPLAR_DIR]
+# With -s "1 2 3", each figure is the median over those seeds, each
+# seed's after it.
+#
+# Usage: benchmarks/style-transfer.sh [-b BUILD_DIR] [-e EXEMPLAR_DIR] [-s SEEDS]
 
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")/.." && pwd)
 build="$here/build"
 exemplars="$here/tests/exemplars"
-while getopts "b:e:" opt; do
+seeds=1
+while getopts "b:e:s:" opt; do
   case $opt in
     b) build=$(cd "$OPTARG" && pwd) ;;
     e) exemplars=$(cd "$OPTARG" && pwd) ;;
-    *) echo "usage: $0 [-b BUILD_DIR] [-e EXEMPLAR_DIR]" >&2; exit 2 ;;
+    s) seeds=$OPTARG ;;
+    *) echo "usage: $0 [-b BUILD_DIR] [-e EXEMPLAR_DIR] [-s SEEDS]" >&2; exit 2 ;;
   esac
 done
 measure="$build/tools/texsynth-measure"
@@ -37,13 +42,24 @@ trap 'rm -rf "$work"' EXIT
 quiet_gegl() { gegl "$@" > "$work/gegl.log" 2>&1 || { cat "$work/gegl.log" >&2; exit 1; }; }
 
 restyle() {  # half picture exemplar
-  quiet_gegl -i "$work/$2.png" -o "$work/$2-$3.png" -- texsynth:guided seed=1 \
-    aux=[ gegl:load path="$exemplars/$3.png" ]
-  "$measure" --style-target="$work/$2.png" "$exemplars/$3.png" "$work/$2-$3.png" \
-    > "$work/figures" 2> "$work/measure.log" || { cat "$work/measure.log" >&2; exit 1; }
+  : > "$work/all"
+  for seed in $seeds; do
+    quiet_gegl -i "$work/$2.png" -o "$work/$2-$3.png" -- texsynth:guided seed="$seed" \
+      aux=[ gegl:load path="$exemplars/$3.png" ]
+    "$measure" --style-target="$work/$2.png" "$exemplars/$3.png" "$work/$2-$3.png" \
+      > "$work/figures" 2> "$work/measure.log" || { cat "$work/measure.log" >&2; exit 1; }
+    awk '/^style-correlation:/ { r = $2 } /^sharpness:/ { s = $2 } END { print r, s }' \
+      "$work/figures" >> "$work/all"
+  done
   awk -v half="$1" -v what="$2 by $3" '
-      /^style-correlation:/ { r = $2 } /^sharpness:/ { s = $2 }
-      END { printf "| %s | %s | %.3f | %.2f |\n", half, what, r, s }' "$work/figures"
+      function median(v, n,   i, j, t) {
+        for (i = 2; i <= n; i++) for (j = i; j > 1 && v[j - 1] > v[j]; j--) { t = v[j]; v[j] = v[j - 1]; v[j - 1] = t }
+        return n % 2 ? v[(n + 1) / 2] : (v[n / 2] + v[n / 2 + 1]) / 2 }
+      { n++; r[n] = $1; s[n] = $2; rs = rs sprintf("%s%.3f", n > 1 ? " / " : "", $1)
+        ss = ss sprintf("%s%.2f", n > 1 ? " / " : "", $2) }
+      END { if (n == 1) printf "| %s | %s | %.3f | %.2f |\n", half, what, r[1], s[1]
+            else printf "| %s | %s | %.3f (%s) | %.2f (%s) |\n", half, what, median(r, n), rs, median(s, n), ss }' \
+    "$work/all"
 }
 
 echo "| half | picture by exemplar | correlation | sharpness |"
