@@ -48,13 +48,14 @@ main (int argc, char **argv)
       seeds = (size_t) atoi (optarg);
     else
       {
-        fprintf (stderr, "usage: guided-regions [-n SEEDS (1-%d)] [-o DIR] FIRST.png SECOND.png "
-                 "THIRD.png\n", TS_CASE_MAX_SEEDS);
+        fprintf (stderr, "usage: guided-regions [-n SEEDS (1-%d)] [-o DIR] FIRST.png "
+                 "SECOND.png THIRD.png\n", TS_CASE_MAX_SEEDS);
         return 2;
       }
   if (argc - optind != 3)
     {
-      fprintf (stderr, "usage: guided-regions [-n SEEDS] [-o DIR] FIRST.png SECOND.png THIRD.png\n");
+      fprintf (stderr,
+               "usage: guided-regions [-n SEEDS] [-o DIR] FIRST.png SECOND.png THIRD.png\n");
       return 2;
     }
   ts_io_init ();
@@ -86,7 +87,8 @@ main (int argc, char **argv)
       {
         const char *how = blend ? "blended" : "layers";
         TsCaseFigures f;
-        if ((status = ts_case_guided (&ex, labels, layout, blend, seeds, &f, &out, &error)) != TS_OK)
+        status = ts_case_guided (&ex, labels, layout, blend, seeds, &f, &out, &error);
+        if (status != TS_OK)
           return fail ("guided synthesis", status, &error);
         printf ("%-8s %-7s fidelity %.3f  edge offset %.2f px  coherence / plain:",
                 ts_case_layout_name[layout], how, ts_case_median (f.fidelity, seeds),

@@ -20,8 +20,8 @@ import argparse
 import json
 import os
 import statistics
-import struct
 import shutil
+import struct
 import subprocess
 import sys
 import tempfile

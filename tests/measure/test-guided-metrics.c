@@ -70,7 +70,8 @@ check_guided (const TsImage *ex, const uint8_t *ex_labels, TsCaseLayout layout,
       const char *how = blend ? "blended" : "layers";
       TsCaseFigures f;
       TsError error = { TS_OK, "" };
-      TsStatus status = ts_case_guided (ex, ex_labels, layout, blend, TS_CASE_SEEDS, &f, NULL, &error);
+      TsStatus status = ts_case_guided (ex, ex_labels, layout, blend, TS_CASE_SEEDS, &f, NULL,
+                                        &error);
       if (status != TS_OK)
         {
           CHECK (false, "%s %s: synthesis: %s", name, how,
@@ -146,8 +147,8 @@ main (void)
   for (size_t l = 0; l < 3 && !test_small (); l++)
     {
       TsError error = { TS_OK, "" };
-      CHECK (ts_case_plain_coherence (&ex, l, TS_CASE_SEEDS, &plain[l], &error) == TS_OK, "plain synthesis: %s",
-             error.message);
+      CHECK (ts_case_plain_coherence (&ex, l, TS_CASE_SEEDS, &plain[l], &error) == TS_OK,
+             "plain synthesis: %s", error.message);
     }
   for (TsCaseLayout layout = TS_CASE_DISCS; layout < TS_CASE_LAYOUTS; layout++)
     {
