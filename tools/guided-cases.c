@@ -69,12 +69,19 @@ ts_case_strip (const TsImage *exemplar, size_t l, TsImage *strip)
   return true;
 }
 
+/* A caller's number of seeds, within 1..TS_CASE_MAX_SEEDS. */
+static size_t
+seed_count (size_t seeds)
+{
+  return seeds < 1 ? 1 : seeds > TS_CASE_MAX_SEEDS ? TS_CASE_MAX_SEEDS : seeds;
+}
+
 double
 ts_case_median (const double *v, size_t n)
 {
   double sorted[TS_CASE_MAX_SEEDS];
 
-  n = n < TS_CASE_MAX_SEEDS ? n : TS_CASE_MAX_SEEDS;
+  n = seed_count (n);
   memcpy (sorted, v, n * sizeof (double));
   for (size_t i = 1; i < n; i++)
     for (size_t j = i; j > 0 && sorted[j - 1] > sorted[j]; j--)
@@ -108,7 +115,7 @@ ts_case_plain_coherence (const TsImage *exemplar, size_t l, size_t seeds, double
   double coherence[TS_CASE_MAX_SEEDS], seam;
   TsStatus status = TS_ERROR_OUT_OF_MEMORY;
 
-  seeds = seeds < 1 ? 1 : seeds > TS_CASE_MAX_SEEDS ? TS_CASE_MAX_SEEDS : seeds;
+  seeds = seed_count (seeds);
 
   out.pixels = malloc (TS_CASE_OUT * TS_CASE_OUT * TS_CHANNELS * sizeof (float));
   if (out.pixels && ts_case_strip (exemplar, l, &strip))
@@ -156,7 +163,7 @@ ts_case_guided (const TsImage *exemplar, const uint8_t *labels, TsCaseLayout lay
       guides.target_guide = t_guide;
       guides.blend_edges = blend_edges;
     }
-  seeds = seeds < 1 ? 1 : seeds > TS_CASE_MAX_SEEDS ? TS_CASE_MAX_SEEDS : seeds;
+  seeds = seed_count (seeds);
   for (uint32_t s = 0; s < seeds && status == TS_OK; s++)
     {
       TsLabelMeasures m;
